@@ -1,0 +1,24 @@
+// afford check FILE...: validate files; non-zero exit on any error.
+#include <iostream>
+
+#include "commands.h"
+#include "errors.h"
+#include "validate.h"
+
+namespace afford::cli {
+
+int run_check(const Args& args) {
+  if (args.empty()) return usage_error("check needs at least one FILE");
+  int errors = 0;
+  for (const std::string& path : args) {
+    try {
+      std::cout << path << ": ok (" << validate_file(path) << ")\n";
+    } catch (const DataError& e) {
+      std::cerr << e.what() << "\n";
+      ++errors;
+    }
+  }
+  return errors == 0 ? 0 : 1;
+}
+
+}  // namespace afford::cli

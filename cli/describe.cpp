@@ -1,0 +1,128 @@
+// afford describe FILE: what the model derives from an object file (lever
+// pattern, mechanical advantage along the arm, interaction space, which
+// actees fit, spring force at each limit); `--effects` lists the optional
+// torque terms.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "commands.h"
+#include "derive.h"
+#include "effects.h"
+#include "lever.h"
+#include "load.h"
+#include "model.h"
+
+namespace afford::cli {
+namespace {
+
+std::string q(double si, const Dimension& d) { return format_quantity(si, d); }
+
+void describe_effects() {
+  std::cout << "optional torque terms (object file, key 'effects'):\n";
+  for (const EffectManifest& e : effect_registry()) {
+    std::cout << "  " << e.name << ": " << e.doc << "\n";
+    for (const EffectParam& p : e.params) std::cout << "      " << p.key << ": " << p.doc << "\n";
+    std::cout << "      enabled: true|false (optional, default true)\n";
+  }
+}
+
+void describe_object(const ObjectSpec& o, const std::string& actee_dir) {
+  const Model m = compile(o, nullptr, nullptr, ModelOptions{});
+  std::cout << "object " << o.name << ": " << o.description << "\n";
+  std::cout << "lever: " << pattern_name(o.lever.pattern) << ", arms from " << q(m.arm_from, dim::length)
+            << " to " << q(m.arm_to, dim::length) << ", opening " << q(m.theta_min, dim::angle) << " to "
+            << q(m.theta_max, dim::angle) << ", rest " << q(m.theta_rest, dim::angle) << "\n";
+
+  std::cout << "mechanical advantage (force at the load per unit effort):\n      effort at";
+  constexpr int kLoads = 3, kEfforts = 5;
+  for (int j = 0; j < kLoads; ++j) {
+    const double a = m.application_from + (m.application_to - m.application_from) * j / (kLoads - 1);
+    std::printf("   load %9s", q(a, dim::length).c_str());
+  }
+  std::cout << "\n";
+  for (int i = 0; i < kEfforts; ++i) {
+    const double e = m.emphasis_from + (m.emphasis_to - m.emphasis_from) * i / (kEfforts - 1);
+    std::printf("  %10s", q(e, dim::length).c_str());
+    for (int j = 0; j < kLoads; ++j) {
+      const double a = m.application_from + (m.application_to - m.application_from) * j / (kLoads - 1);
+      std::printf("   %5.2f %-9s", mechanical_advantage(e, a), pattern_name(pattern_at(e, a)));
+    }
+    std::cout << "\n";
+  }
+
+  const InteractionSpace s = interaction_space(m);
+  std::cout << "interaction space: from " << q(s.from, dim::length) << " to " << q(s.to, dim::length)
+            << " along the arm, jaw opening at theta_max " << q(s.gap_from, dim::length) << " to "
+            << q(s.gap_to, dim::length) << "\n";
+
+  std::cout << "spring: " << q(m.spring_constant, dim::stiffness) << " at " << q(m.spring_position, dim::length)
+            << "; force at theta_min " << q(spring_force(m, m.theta_min), dim::force) << ", at rest "
+            << q(spring_force(m, m.theta_rest), dim::force) << ", at theta_max "
+            << q(spring_force(m, m.theta_max), dim::force) << "\n";
+  const double far = std::abs(m.emphasis_to) > std::abs(m.emphasis_from) ? m.emphasis_to : m.emphasis_from;
+  std::cout << "effort to close against the spring alone, at " << q(far, dim::length) << ": "
+            << q(effort_for_load(m, m.theta_min, far, m.application_from, 0), dim::force) << "\n";
+  for (const ModelEffect& e : m.effects) {
+    std::cout << "effect " << e.name << (e.enabled ? "" : " (disabled)") << "\n";
+  }
+
+  if (actee_dir.empty() || !std::filesystem::is_directory(actee_dir)) return;
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(actee_dir)) {
+    if (entry.path().extension() == ".yaml") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  std::cout << "actees in " << actee_dir << ":\n";
+  for (const std::string& file : files) {
+    const ActeeSpec a = load_actee(file);
+    ModelOptions options;
+    options.actee.in_jaws = false;  // fit_actee places it itself
+    const Model with = compile(o, &a, nullptr, options);
+    const ActeeFit fit = fit_actee(with);
+    if (fit.fits) {
+      std::printf("  %-12s fits from %s to %s; jaws touch at %s; limit %s needs %s at the handle end\n",
+                  a.name.c_str(), q(fit.from, dim::length).c_str(), q(fit.to, dim::length).c_str(),
+                  q(fit.contact_angle, dim::angle).c_str(), q(a.limit, dim::force).c_str(),
+                  q(fit.effort_to_limit, dim::force).c_str());
+    } else {
+      std::printf("  %-12s does not fit: %s\n", a.name.c_str(), fit.why.c_str());
+    }
+  }
+}
+
+}  // namespace
+
+int run_describe(const Args& args) {
+  std::string file, actee_dir;
+  bool actees_given = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--effects") {
+      describe_effects();
+      return 0;
+    }
+    if (args[i] == "--actees") {
+      if (i + 1 >= args.size()) return usage_error("--actees needs a DIR");
+      actee_dir = args[++i];
+      actees_given = true;
+    } else if (file.empty()) {
+      file = args[i];
+    } else {
+      return usage_error("describe takes one FILE");
+    }
+  }
+  if (file.empty()) return usage_error("describe needs a FILE (or --effects)");
+  const Node root = load_yaml_file(file);
+  const std::string kind = file_kind(root);
+  if (kind != "object") return usage_error("describe reads object files; " + file + " is a " + kind + " file");
+  if (!actees_given) {
+    // The shipped actees sit beside the objects folder.
+    actee_dir = (std::filesystem::path(file).parent_path().parent_path() / "actees").string();
+    if (actee_dir == "actees" || !std::filesystem::is_directory(actee_dir)) actee_dir = "actees";
+  }
+  describe_object(read_object(root), actee_dir);
+  return 0;
+}
+
+}  // namespace afford::cli

@@ -1,0 +1,65 @@
+// afford: infer what an articulated hand tool is for, by simulating it.
+#include <cstdio>
+#include <iostream>
+
+#include "commands.h"
+#include "did_you_mean.h"
+#include "errors.h"
+
+namespace afford::cli {
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> kCommands = {
+      {"check", "check FILE...", "validate object, actee and agent files", run_check},
+      {"describe", "describe FILE [--actees DIR] | describe --effects",
+       "what the model derives from a file: lever, advantage, interaction space, fits",
+       run_describe},
+  };
+  return kCommands;
+}
+
+int usage_error(const std::string& message) {
+  std::cerr << "afford: " << message << "\n";
+  return 2;
+}
+
+namespace {
+
+void print_help() {
+  std::cout << "usage: afford COMMAND [ARGS]\n\ncommands:\n";
+  for (const Command& c : commands()) {
+    std::printf("  %-52s %s\n", c.usage, c.summary);
+  }
+}
+
+}  // namespace
+}  // namespace afford::cli
+
+int main(int argc, char** argv) {
+  using namespace afford::cli;
+  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+    print_help();
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string name = argv[1];
+  const Args args(argv + 2, argv + argc);
+  std::vector<std::string> names;
+  for (const Command& c : commands()) {
+    names.emplace_back(c.name);
+    if (name != c.name) continue;
+    try {
+      return c.run(args);
+    } catch (const afford::DataError& e) {
+      std::cerr << e.what() << "\n";
+      return 1;
+    } catch (const afford::LogicError& e) {
+      std::cerr << "afford: internal error (please report): " << e.what() << "\n";
+      return 3;
+    } catch (const std::exception& e) {
+      std::cerr << "afford: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  return usage_error("unknown command '" + name + "'" + afford::did_you_mean(name, names) +
+                     "; see afford --help");
+}

@@ -1,0 +1,379 @@
+#include "geometry.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/convex.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/ellipsoid.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace afford {
+
+namespace {
+
+using Eigen::Vector3d;
+
+// ---------------------------------------------------------------- convex hull
+
+struct HullFace {
+  std::array<int, 3> v;  // counter-clockwise seen from outside
+  Vector3d normal;       // unit, outward
+  double offset;         // normal . x on the face's plane
+  bool dead = false;
+};
+
+HullFace make_face(const std::vector<Vector3d>& p, int a, int b, int c) {
+  Vector3d n = (p[b] - p[a]).cross(p[c] - p[a]);
+  const double len = n.norm();
+  if (len > 0) n /= len;
+  return HullFace{{a, b, c}, n, n.dot(p[a])};
+}
+
+struct Hull {
+  std::vector<Vector3d> vertices;
+  std::vector<int> faces;  // FCL's encoding: 3, i0, i1, i2, 3, ...
+  int num_faces = 0;
+};
+
+// Incremental hull, O(n^2): the shapes are written by hand (a few hundred
+// points at most) and compiled once, so plain beats clever here. Returns
+// triangles; a point on a face or an edge of the final hull may remain a
+// corner of some (flat) triangles if it came before the points that cover it.
+std::vector<HullFace> hull_triangles(const std::vector<Vector3d>& p, const SourceLoc& loc) {
+  const int n = static_cast<int>(p.size());
+  const std::string expected = "at least 4 vertices that span a volume";
+  if (n < 4) fail(loc, expected, std::to_string(n) + (n == 1 ? " vertex" : " vertices"));
+  for (const Vector3d& x : p)
+    if (!x.allFinite()) fail(loc, "finite vertex coordinates", "a non-finite vertex");
+
+  // Tolerances relative to the size of the point set, so that mm and m agree.
+  Eigen::AlignedBox3d box;
+  for (const Vector3d& x : p) box.extend(x);
+  const double eps = 1e-9 * std::max(box.diagonal().norm(), 1e-300);
+
+  // A first tetrahedron from extreme points; each failure names the degeneracy.
+  int i0 = 0;
+  for (int i = 1; i < n; ++i)
+    if (p[i].x() < p[i0].x()) i0 = i;
+  auto farthest = [&](auto&& measure) {
+    int best = -1;
+    double best_d = eps;
+    for (int i = 0; i < n; ++i) {
+      const double d = measure(p[i]);
+      if (d > best_d) {
+        best = i;
+        best_d = d;
+      }
+    }
+    return best;
+  };
+  const int i1 = farthest([&](const Vector3d& x) { return (x - p[i0]).norm(); });
+  if (i1 < 0) fail(loc, expected, "one point repeated");
+  const Vector3d axis = (p[i1] - p[i0]).normalized();
+  const int i2 = farthest([&](const Vector3d& x) { return (x - p[i0]).cross(axis).norm(); });
+  if (i2 < 0) fail(loc, expected, "collinear vertices");
+  const Vector3d plane = (p[i1] - p[i0]).cross(p[i2] - p[i0]).normalized();
+  const int i3 = farthest([&](const Vector3d& x) { return std::abs((x - p[i0]).dot(plane)); });
+  if (i3 < 0) fail(loc, expected, "coplanar vertices");
+
+  // Each face of the tetrahedron turned so that the fourth corner is behind it.
+  std::vector<HullFace> faces;
+  const std::array<int, 4> t{i0, i1, i2, i3};
+  for (int k = 0; k < 4; ++k) {
+    const int a = t[(k + 1) % 4], b = t[(k + 2) % 4], c = t[(k + 3) % 4];
+    HullFace f = make_face(p, a, b, c);
+    faces.push_back(f.normal.dot(p[t[k]]) > f.offset ? make_face(p, a, c, b) : f);
+  }
+
+  std::vector<std::pair<int, int>> edges, horizon;
+  for (int i = 0; i < n; ++i) {
+    if (i == i0 || i == i1 || i == i2 || i == i3) continue;
+    // The faces that see the point go; the loop of their boundary edges (the
+    // horizon) is coned to the point. A point within eps of the hull is inside.
+    edges.clear();
+    for (HullFace& f : faces) {
+      if (f.dead || f.normal.dot(p[i]) - f.offset <= eps) continue;
+      f.dead = true;
+      edges.emplace_back(f.v[0], f.v[1]);
+      edges.emplace_back(f.v[1], f.v[2]);
+      edges.emplace_back(f.v[2], f.v[0]);
+    }
+    horizon.clear();
+    for (const auto& [a, b] : edges)
+      if (std::find(edges.begin(), edges.end(), std::pair{b, a}) == edges.end())
+        horizon.emplace_back(a, b);
+    for (const auto& [a, b] : horizon) faces.push_back(make_face(p, a, b, i));
+    std::erase_if(faces, [](const HullFace& f) { return f.dead; });
+  }
+  return faces;
+}
+
+Hull convex_hull(const std::vector<Vector3d>& input, const SourceLoc& loc) {
+  std::vector<Vector3d> p = input;
+  std::vector<HullFace> faces = hull_triangles(p, loc);
+
+  // A true corner meets faces whose normals span 3D; a point inside a face
+  // (one normal) or on an edge (two) is dropped and the hull built again.
+  std::vector<Eigen::Matrix3d> spread(p.size(), Eigen::Matrix3d::Zero());
+  std::vector<bool> used(p.size(), false);
+  for (const HullFace& f : faces) {
+    for (int v : f.v) {
+      spread[v] += f.normal * f.normal.transpose();
+      used[v] = true;
+    }
+  }
+  std::vector<Vector3d> corners;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!used[i]) continue;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+    eig.computeDirect(spread[i], Eigen::EigenvaluesOnly);
+    if (eig.eigenvalues().minCoeff() > 1e-12) corners.push_back(p[i]);
+  }
+  if (corners.size() < p.size()) {
+    p = std::move(corners);
+    faces = hull_triangles(p, loc);
+  }
+
+  // Keep only the vertices the faces use, renumbered in input order.
+  Hull hull;
+  std::vector<int> index(p.size(), -1);
+  for (const HullFace& f : faces)
+    for (int v : f.v) index[v] = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (index[i] < 0) continue;
+    index[i] = static_cast<int>(hull.vertices.size());
+    hull.vertices.push_back(p[i]);
+  }
+  for (const HullFace& f : faces) {
+    hull.faces.insert(hull.faces.end(), {3, index[f.v[0]], index[f.v[1]], index[f.v[2]]});
+  }
+  hull.num_faces = static_cast<int>(faces.size());
+  return hull;
+}
+
+void check_size(const SourceLoc& loc, const char* what, double value) {
+  if (!std::isfinite(value) || value < 0)
+    fail(loc, std::string("a non-negative ") + what, std::to_string(value));
+}
+
+// World support of a placed shape: max over the shape of x . d, d unit, world.
+double world_support(const Geometry& g, const Eigen::Isometry3d& pose, const Vector3d& d) {
+  return g.support(pose.linear().transpose() * d) + pose.translation().dot(d);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- Geometry
+
+Geometry Geometry::compile(const ShapeSpec& spec) {
+  Geometry g;
+  g.spec_ = spec;
+  const SourceLoc& loc = spec.loc;
+  switch (spec.kind) {
+    case ShapeKind::sphere: {
+      check_size(loc, "radius", spec.radius);
+      g.fcl_ = std::make_shared<fcl::Sphered>(spec.radius);
+      g.local_box_ = {Vector3d::Constant(-spec.radius), Vector3d::Constant(spec.radius)};
+      break;
+    }
+    case ShapeKind::box: {
+      for (int i = 0; i < 3; ++i) check_size(loc, "box size", spec.size[i]);
+      g.fcl_ = std::make_shared<fcl::Boxd>(spec.size);
+      g.local_box_ = {-0.5 * spec.size, 0.5 * spec.size};
+      break;
+    }
+    case ShapeKind::capsule:
+    case ShapeKind::cylinder: {
+      check_size(loc, "radius", spec.radius);
+      check_size(loc, "length", spec.length);
+      if (spec.kind == ShapeKind::capsule)
+        g.fcl_ = std::make_shared<fcl::Capsuled>(spec.radius, spec.length);
+      else
+        g.fcl_ = std::make_shared<fcl::Cylinderd>(spec.radius, spec.length);
+      // Our axis is local x, FCL's is z: a quarter turn about y takes z to x.
+      // Written out so that the zeros are exact.
+      Eigen::Matrix3d turn;
+      turn << 0, 0, 1,  //
+          0, 1, 0,      //
+          -1, 0, 0;
+      g.fcl_offset_.linear() = turn;
+      const double end = 0.5 * spec.length + (spec.kind == ShapeKind::capsule ? spec.radius : 0);
+      const Vector3d half(end, spec.radius, spec.radius);
+      g.local_box_ = {-half, half};
+      break;
+    }
+    case ShapeKind::ellipsoid: {
+      for (int i = 0; i < 3; ++i) check_size(loc, "semi-axis", spec.radii[i]);
+      g.fcl_ = std::make_shared<fcl::Ellipsoidd>(spec.radii);
+      g.local_box_ = {-spec.radii, spec.radii};
+      break;
+    }
+    case ShapeKind::convex: {
+      Hull hull = convex_hull(spec.vertices, loc);
+      g.hull_vertices_ = hull.vertices;
+      g.local_box_.setEmpty();
+      for (const Vector3d& v : hull.vertices) g.local_box_.extend(v);
+      g.fcl_ = std::make_shared<fcl::Convexd>(
+          std::make_shared<const std::vector<Vector3d>>(std::move(hull.vertices)), hull.num_faces,
+          std::make_shared<const std::vector<int>>(std::move(hull.faces)));
+      break;
+    }
+  }
+  g.fcl_->computeLocalAABB();
+  return g;
+}
+
+double Geometry::support(const Vector3d& d) const {
+  switch (spec_.kind) {
+    case ShapeKind::sphere:
+      return spec_.radius;
+    case ShapeKind::box:
+      return 0.5 * spec_.size.dot(d.cwiseAbs());
+    case ShapeKind::capsule:
+      return 0.5 * spec_.length * std::abs(d.x()) + spec_.radius;
+    case ShapeKind::cylinder:
+      return 0.5 * spec_.length * std::abs(d.x()) + spec_.radius * std::hypot(d.y(), d.z());
+    case ShapeKind::ellipsoid:
+      // Maximum of x . d on x = diag(r) u, |u| = 1, is |diag(r) d|.
+      return spec_.radii.cwiseProduct(d).norm();
+    case ShapeKind::convex: {
+      double best = -std::numeric_limits<double>::infinity();
+      for (const Vector3d& v : hull_vertices_) best = std::max(best, v.dot(d));
+      return best;
+    }
+  }
+  return 0;
+}
+
+// ---------------------------------------------------------------- ContactQuery
+
+namespace {
+// Below this gap, m, the nearest points are too close to give a direction.
+constexpr double kTinyGap = 1e-9;
+// Contacts this close in depth, m, count as one face: their points are averaged.
+constexpr double kSameDepth = 1e-9;
+constexpr std::size_t kMaxContacts = 4;  // box-box faces give four corners
+}  // namespace
+
+struct ContactQuery::Impl {
+  // GJK via libccd (FCL's default): its EPA-free penetration (MPR) gives
+  // sane normals; FCL's own GJK/EPA ("indep") returned negative depths and
+  // wrong normals for convex pairs in 0.7.
+  fcl::DistanceRequestd plain_request{false};
+  fcl::DistanceRequestd nearest_request{true};
+  fcl::DistanceResultd distance_result;
+  fcl::CollisionRequestd collision_request{kMaxContacts, true};
+  fcl::CollisionResultd collision_result;
+
+  Impl() {
+    // The contacts vector is private: fill and clear it once to keep capacity.
+    for (std::size_t i = 0; i < 2 * kMaxContacts; ++i) collision_result.addContact({});
+    collision_result.clear();
+  }
+
+  double distance(const Geometry& a, const Eigen::Isometry3d& pa, const Geometry& b,
+                  const Eigen::Isometry3d& pb, const fcl::DistanceRequestd& request) {
+    distance_result.clear();
+    return fcl::distance(&a.fcl(), pa * a.fcl_offset(), &b.fcl(), pb * b.fcl_offset(), request,
+                         distance_result);
+  }
+};
+
+ContactQuery::ContactQuery() : impl_(std::make_unique<Impl>()) {}
+ContactQuery::~ContactQuery() = default;
+
+double ContactQuery::distance(const Geometry& a, const Eigen::Isometry3d& pose_a,
+                              const Geometry& b, const Eigen::Isometry3d& pose_b) {
+  // Unsigned: FCL reports an overlap as a negative value (mostly -1).
+  return std::max(0.0, impl_->distance(a, pose_a, b, pose_b, impl_->plain_request));
+}
+
+bool ContactQuery::contact(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
+                           const Eigen::Isometry3d& pose_b, double tolerance, ContactPoint* out) {
+  Impl& q = *impl_;
+  const double gap = q.distance(a, pose_a, b, pose_b, q.nearest_request);
+  if (gap > tolerance) return false;
+  const Vector3d& near_a = q.distance_result.nearest_points[0];
+  const Vector3d& near_b = q.distance_result.nearest_points[1];
+  if (gap > kTinyGap) {
+    out->point = 0.5 * (near_a + near_b);
+    out->normal = (near_b - near_a).normalized();
+    out->distance = gap;
+    return true;
+  }
+
+  // Touching or overlapping: the deepest of FCL's contacts (normal from o1
+  // to o2, depth >= 0). Contacts of equal depth (a face on a face) are
+  // averaged so that the point is the middle of the patch, not a corner.
+  q.collision_result.clear();
+  fcl::collide(&a.fcl(), pose_a * a.fcl_offset(), &b.fcl(), pose_b * b.fcl_offset(),
+               q.collision_request, q.collision_result);
+  const fcl::CollisionResultd& result = q.collision_result;
+  Vector3d normal = Vector3d::Zero();
+  if (result.numContacts() == 0) {
+    // Touching exactly, which GJK may call either way.
+    out->point = gap >= 0 ? Vector3d(0.5 * (near_a + near_b))
+                          : Vector3d(0.5 * (pose_a.translation() + pose_b.translation()));
+    out->distance = 0;
+  } else {
+    double depth = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < result.numContacts(); ++i)
+      depth = std::max(depth, result.getContact(i).penetration_depth);
+    Vector3d sum = Vector3d::Zero();
+    int count = 0;
+    for (std::size_t i = 0; i < result.numContacts(); ++i) {
+      const fcl::Contactd& c = result.getContact(i);
+      if (c.penetration_depth < depth - kSameDepth) continue;
+      sum += c.pos;
+      if (count == 0) normal = c.normal;
+      ++count;
+    }
+    out->point = sum / static_cast<double>(count);
+    out->distance = std::min(0.0, -depth);
+  }
+
+  // libccd can return a zero normal (concentric spheres, some touching
+  // pairs): fall back to the line between the origins, then to x.
+  if (!(normal.squaredNorm() > 0.25)) {
+    normal = pose_b.translation() - pose_a.translation();
+    if (!(normal.squaredNorm() > 0)) normal = Vector3d::UnitX();
+  }
+  normal.normalize();
+  // Guard the sign: the direction from a to b is the one along which b must
+  // move less to clear a (support of a along n plus support of b along -n).
+  const double clear_along = world_support(a, pose_a, normal) + world_support(b, pose_b, -normal);
+  const double clear_against = world_support(a, pose_a, -normal) + world_support(b, pose_b, normal);
+  if (clear_against < clear_along) normal = -normal;
+  out->normal = normal;
+  return true;
+}
+
+// ---------------------------------------------------------------- boxes_apart
+
+bool boxes_apart(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
+                 const Eigen::Isometry3d& pose_b, double margin) {
+  // A rotated box's world extent is |R| times its half sizes. The boxes are
+  // apart when they are more than margin apart along some world axis; then
+  // the shapes inside are more than margin apart too.
+  const Eigen::AlignedBox3d& la = a.local_box();
+  const Eigen::AlignedBox3d& lb = b.local_box();
+  const Vector3d ca = pose_a * la.center();
+  const Vector3d cb = pose_b * lb.center();
+  const Vector3d ha = pose_a.linear().cwiseAbs() * (0.5 * la.sizes());
+  const Vector3d hb = pose_b.linear().cwiseAbs() * (0.5 * lb.sizes());
+  return ((ca - cb).cwiseAbs() - ha - hb).maxCoeff() > margin;
+}
+
+}  // namespace afford

@@ -1,0 +1,79 @@
+// Collision geometry compiled from a ShapeSpec: an FCL shape that sessions
+// share read-only, plus the few exact facts the solver and the guides need
+// without a query (bounding box, support function).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <memory>
+
+#include "spec.h"
+
+namespace fcl {
+template <typename S>
+class CollisionGeometry;
+}
+
+namespace afford {
+
+class Geometry {
+ public:
+  // Builds the FCL shape. Capsules and cylinders lie along the local x axis
+  // (FCL's lie along z; the turn is folded in here). A convex shape is the
+  // hull of its vertices; fewer than four points, or points that span no
+  // volume, are a DataError at spec.loc.
+  static Geometry compile(const ShapeSpec& spec);
+
+  const fcl::CollisionGeometry<double>& fcl() const { return *fcl_; }
+  // Maps this shape's local frame to FCL's frame for the shape (identity but
+  // for capsules and cylinders).
+  const Eigen::Isometry3d& fcl_offset() const { return fcl_offset_; }
+  // Axis-aligned box of the shape in its local frame, m.
+  const Eigen::AlignedBox3d& local_box() const { return local_box_; }
+  // max over the shape of x . direction, local frame, m (direction unit).
+  double support(const Eigen::Vector3d& direction) const;
+  const ShapeSpec& spec() const { return spec_; }
+
+ private:
+  ShapeSpec spec_;
+  std::shared_ptr<fcl::CollisionGeometry<double>> fcl_;
+  Eigen::Isometry3d fcl_offset_ = Eigen::Isometry3d::Identity();
+  Eigen::AlignedBox3d local_box_;
+  std::vector<Eigen::Vector3d> hull_vertices_;  // convex: the hull's vertices only
+};
+
+// One contact between two placed shapes: where, which way, how deep.
+struct ContactPoint {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();   // m, world
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // unit, world, from shape a to shape b
+  double distance = 0;  // m: > 0 a gap within tolerance, <= 0 touching or overlapping
+};
+
+// Pair queries between two placed geometries. One ContactQuery per session:
+// it keeps FCL's request and result objects so that a frame allocates nothing.
+class ContactQuery {
+ public:
+  ContactQuery();
+  ~ContactQuery();
+  ContactQuery(const ContactQuery&) = delete;
+  ContactQuery& operator=(const ContactQuery&) = delete;
+
+  // Separation distance, m; 0 when the shapes touch or overlap.
+  double distance(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
+                  const Eigen::Isometry3d& pose_b);
+
+  // True when the shapes overlap or are closer than tolerance (m); then
+  // `out` holds the deepest point (or the midpoint of the gap) and normal.
+  bool contact(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
+               const Eigen::Isometry3d& pose_b, double tolerance, ContactPoint* out);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Cheap rejection before a query: true when the world boxes of the two
+// placed shapes, grown by margin (m), cannot touch.
+bool boxes_apart(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
+                 const Eigen::Isometry3d& pose_b, double margin);
+
+}  // namespace afford

@@ -1,0 +1,30 @@
+// Loading user files: YAML -> validated Spec. Every function throws a
+// DataError naming file:line:col on the first mistake it finds.
+#pragma once
+
+#include <string>
+
+#include "spec.h"
+#include "yaml_reader.h"
+
+namespace afford {
+
+ObjectSpec load_object(const std::string& path);
+ActeeSpec load_actee(const std::string& path);
+AgentSpec load_agent(const std::string& path);
+
+// The same from an already parsed document (tests, inline session files).
+ObjectSpec read_object(const Node& root);
+ActeeSpec read_actee(const Node& root);
+AgentSpec read_agent(const Node& root);
+
+// Pieces shared by the loaders.
+ShapeSpec read_shape(const Node& node);
+PoseSpec read_pose(MapReader& map);     // keys position (required), rotation (optional)
+RangeSpec read_range(const Node& node, const std::string& what);  // {from, to}
+Eigen::Vector3d read_direction(const Node& node);  // three numbers, made unit
+
+// Which kind a file is, from its first key (object, actee, agent, ...).
+std::string file_kind(const Node& root);
+
+}  // namespace afford

@@ -1,0 +1,51 @@
+// agents/*.yaml -> AgentSpec.
+#include "load.h"
+
+namespace afford {
+
+const std::array<const char*, kFingers> kFingerNames = {"thumb", "index", "middle", "ring", "little"};
+const std::array<const char*, kJoints> kJointNames = {"distal", "proximal", "metacarpal"};
+
+namespace {
+
+FingerSpec read_finger(const Node& node, const std::string& name) {
+  MapReader m(node, "the " + name);
+  FingerSpec f;
+  const Node r = m.required("tip_radius");
+  f.tip_radius = require_positive(r, read_quantity(r, dim::length));
+  for (int j = 0; j < kJoints; ++j) {
+    const Node range = m.required(kJointNames[j]);
+    if (!range.is_sequence() || range.size() != 2) range.fail("a pair [min, max] of angles");
+    f.joint_min[j] = read_quantity(range[0], dim::angle);
+    f.joint_max[j] = read_quantity(range[1], dim::angle);
+    if (!(f.joint_max[j] > f.joint_min[j])) range[1].fail("a maximum above the minimum");
+  }
+  m.finish();
+  return f;
+}
+
+}  // namespace
+
+AgentSpec read_agent(const Node& root) {
+  MapReader m(root, "an agent file");
+  AgentSpec a;
+  a.loc = root.loc();
+  a.file = root.loc().file;
+  a.name = read_name(m.required("agent"));
+  a.description = read_string(m.required("description"));
+  const Node gain = m.required("force_gain");
+  a.force_gain = require_positive(gain, read_quantity(gain, dim::stiffness));
+  const Node max_force = m.required("max_force");
+  a.max_force = require_positive(max_force, read_quantity(max_force, dim::force));
+  MapReader fingers(m.required("fingers"), "the fingers");
+  for (int i = 0; i < kFingers; ++i) {
+    a.fingers[static_cast<size_t>(i)] = read_finger(fingers.required(kFingerNames[i]), kFingerNames[i]);
+  }
+  fingers.finish();
+  m.finish();
+  return a;
+}
+
+AgentSpec load_agent(const std::string& path) { return read_agent(load_yaml_file(path)); }
+
+}  // namespace afford

@@ -1,0 +1,203 @@
+// objects/*.yaml -> ObjectSpec, with every physical check that one file
+// can answer by itself.
+#include <cmath>
+#include <numbers>
+
+#include "did_you_mean.h"
+#include "effects.h"
+#include "lever.h"
+#include "load.h"
+
+namespace afford {
+namespace {
+
+void require_on_arm(const Node& node, double distance, const RangeSpec& arm) {
+  if (distance < arm.from || distance > arm.to) {
+    node.fail("a distance on the arm, between " + format_quantity(arm.from, dim::length) +
+              " and " + format_quantity(arm.to, dim::length));
+  }
+}
+
+LeverSpec read_lever(const Node& node) {
+  MapReader m(node, "the lever");
+  LeverSpec lever;
+  lever.loc = node.loc();
+  const Node pattern = m.required("pattern");
+  lever.pattern_loc = pattern.loc();
+  const std::string p = read_choice(
+      pattern, {"type1-power", "type1-distance", "type1-balance", "type2", "type3"});
+  for (LeverPattern candidate : {LeverPattern::type1_power, LeverPattern::type1_distance,
+                                 LeverPattern::type1_balance, LeverPattern::type2,
+                                 LeverPattern::type3}) {
+    if (p == pattern_name(candidate)) lever.pattern = candidate;
+  }
+  lever.arm = read_range(m.required("arm"), "the arm's extent");
+  const Node tmin = m.required("theta_min");
+  const Node tmax = m.required("theta_max");
+  const Node rest = m.required("rest");
+  lever.theta_min = read_quantity(tmin, dim::angle);
+  lever.theta_max = read_quantity(tmax, dim::angle);
+  lever.theta_rest = read_quantity(rest, dim::angle);
+  m.finish();
+  if (lever.theta_min < 0) tmin.fail("an opening angle of 0 deg or more");
+  if (!(lever.theta_max > lever.theta_min)) {
+    tmax.fail("theta_max greater than theta_min (" + format_quantity(lever.theta_min, dim::angle) + ")");
+  }
+  if (lever.theta_max >= std::numbers::pi) tmax.fail("an opening angle below 180 deg");
+  if (lever.theta_rest < lever.theta_min || lever.theta_rest > lever.theta_max) {
+    rest.fail("a rest angle between theta_min and theta_max");
+  }
+  return lever;
+}
+
+SpringSpec read_spring(const Node& node, const LeverSpec& lever) {
+  MapReader m(node, "the spring");
+  SpringSpec spring;
+  spring.loc = node.loc();
+  const Node k = m.required("constant");
+  spring.constant = require_positive(k, read_quantity(k, dim::stiffness));
+  const Node pos = m.required("position");
+  spring.position = read_quantity(pos, dim::length);
+  require_on_arm(pos, spring.position, lever.arm);
+  if (spring.position == 0) pos.fail("a spring away from the fulcrum");
+  const std::optional<Node> rest_length = m.optional("rest_length");
+  const std::optional<Node> preload = m.optional("preload");
+  m.finish();
+  if (rest_length.has_value() == preload.has_value()) {
+    node.fail("exactly one of rest_length and preload",
+              rest_length ? "both" : "neither");
+  }
+  const double gap_at_rest = std::abs(spring.position) * lever.theta_rest;
+  if (rest_length) {
+    spring.rest_length = require_positive(*rest_length, read_quantity(*rest_length, dim::length));
+  } else {
+    const double force = require_non_negative(*preload, read_quantity(*preload, dim::force));
+    spring.rest_length = gap_at_rest + force / spring.constant;
+  }
+  // The untouched tool must be at rest: a compressed spring holds it open
+  // against theta_max, a stretched one closed against theta_min.
+  const double compression = spring.rest_length - gap_at_rest;
+  const Node& where = rest_length ? *rest_length : *preload;
+  if (compression > 1e-12 && lever.theta_rest != lever.theta_max) {
+    where.fail("a spring free at the rest angle, or the rest angle at theta_max",
+               "a spring compressed by " + format_quantity(compression, dim::length) +
+                   " at a rest angle below theta_max");
+  }
+  if (compression < -1e-12 && lever.theta_rest != lever.theta_min) {
+    where.fail("a spring free at the rest angle, or the rest angle at theta_min",
+               "a spring stretched by " + format_quantity(-compression, dim::length) +
+                   " at a rest angle above theta_min");
+  }
+  return spring;
+}
+
+// The regions must agree with the declared lever pattern (Fig. 2).
+void check_pattern(const ObjectSpec& o) {
+  std::string why;
+  const std::optional<LeverPattern> derived = derive_pattern(o.emphasis, o.application, &why);
+  if (!derived) fail(o.application.loc, why, "regions that make no lever pattern");
+  if (*derived != o.lever.pattern) {
+    fail(o.lever.pattern_loc, std::string("the pattern that the emphasis and application regions make, ") +
+                          pattern_name(*derived),
+                      std::string("'") + pattern_name(o.lever.pattern) + "'");
+  }
+}
+
+std::vector<EffectSpec> read_effects(const Node& node) {
+  MapReader m(node, "the effects");
+  std::vector<std::string> names;
+  for (const EffectManifest& e : effect_registry()) names.emplace_back(e.name);
+  std::vector<EffectSpec> effects;
+  for (const auto& [name, value] : m.entries()) {
+    const EffectManifest* manifest = find_effect(name);
+    if (manifest == nullptr) {
+      for (const std::string& n : names) (void)m.optional(n);
+      m.finish();  // reports the unknown effect with "did you mean"
+      throw LogicError("unknown effect passed MapReader::finish");
+    }
+    (void)m.optional(name);
+    MapReader params(value, "the effect " + name);
+    EffectSpec effect;
+    effect.name = name;
+    effect.loc = value.loc();
+    for (size_t i = 0; i < manifest->params.size(); ++i) {
+      const EffectParam& p = manifest->params[i];
+      const Node v = params.required(p.key);
+      const double x = read_quantity(v, p.dimension);
+      effect.param[i] = p.zero_allowed ? require_non_negative(v, x) : require_positive(v, x);
+    }
+    if (std::optional<Node> enabled = params.optional("enabled")) effect.enabled = read_bool(*enabled);
+    params.finish();
+    effects.push_back(effect);
+  }
+  m.finish();
+  return effects;
+}
+
+PartSpec read_part(const Node& node) {
+  MapReader m(node, "a part");
+  PartSpec part;
+  part.loc = node.loc();
+  part.name = read_name(m.required("name"));
+  part.arm = read_choice(m.required("arm"), {"fixed", "moving"}) == "fixed" ? Arm::fixed : Arm::moving;
+  part.shape = read_shape(m.required("shape"));
+  part.pose = read_pose(m);
+  m.finish();
+  return part;
+}
+
+}  // namespace
+
+ObjectSpec read_object(const Node& root) {
+  MapReader m(root, "an object file");
+  ObjectSpec o;
+  o.loc = root.loc();
+  o.file = root.loc().file;
+  o.name = read_name(m.required("object"));
+  o.description = read_string(m.required("description"));
+  const Node mass = m.required("mass");
+  o.mass = require_positive(mass, read_quantity(mass, dim::mass));
+  o.centre_of_gravity = read_vector(m.required("centre_of_gravity"), dim::length);
+  {
+    MapReader pose(m.required("functional_pose"), "the functional pose");
+    o.functional_pose = read_pose(pose);
+    pose.finish();
+  }
+  {
+    MapReader plane(m.required("symmetry_plane"), "the symmetry plane");
+    o.symmetry_plane.point = read_vector(plane.required("point"), dim::length);
+    o.symmetry_plane.normal = read_direction(plane.required("normal"));
+    plane.finish();
+  }
+  const Node lever = m.required("lever");
+  o.lever = read_lever(lever);
+  o.spring = read_spring(m.required("spring"), o.lever);
+  const Node emphasis = m.required("emphasis");
+  o.emphasis = read_range(emphasis, "the emphasis region");
+  require_on_arm(emphasis, o.emphasis.from, o.lever.arm);
+  require_on_arm(emphasis, o.emphasis.to, o.lever.arm);
+  const Node application = m.required("application");
+  o.application = read_range(application, "the application region");
+  require_on_arm(application, o.application.from, o.lever.arm);
+  require_on_arm(application, o.application.to, o.lever.arm);
+  check_pattern(o);
+  const Node parts = m.required("parts");
+  if (!parts.is_sequence() || parts.size() == 0) parts.fail("a sequence of parts");
+  bool has_arm[2] = {false, false};
+  for (size_t i = 0; i < parts.size(); ++i) {
+    PartSpec part = read_part(parts[i]);
+    for (const PartSpec& other : o.parts) {
+      if (other.name == part.name) parts[i].fail("a part name used once", "'" + part.name + "' again");
+    }
+    has_arm[static_cast<int>(part.arm)] = true;
+    o.parts.push_back(std::move(part));
+  }
+  if (!has_arm[0] || !has_arm[1]) parts.fail("parts on both arms, fixed and moving");
+  if (std::optional<Node> effects = m.optional("effects")) o.effects = read_effects(*effects);
+  m.finish();
+  return o;
+}
+
+ObjectSpec load_object(const std::string& path) { return read_object(load_yaml_file(path)); }
+
+}  // namespace afford

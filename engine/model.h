@@ -1,0 +1,105 @@
+// The compiled model: everything that does not change during a session,
+// resolved to numbers once (MuJoCo's mjModel). Immutable after compile();
+// many sessions, on many threads, may share one.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "effects.h"
+#include "geometry.h"
+#include "spec.h"
+
+namespace afford {
+
+// Where the actee starts: resting on the fixed jaw at a distance from the
+// fulcrum, or at a pose in the world.
+struct ActeePlacement {
+  bool in_jaws = true;
+  double distance = 0;  // m, signed distance along the fixed arm (in_jaws)
+  Eigen::Isometry3d world = Eigen::Isometry3d::Identity();  // (!in_jaws)
+  SourceLoc loc;  // where the placement was written, for errors
+};
+
+struct ModelOptions {
+  double timestep = 1e-3;           // s, the haptic rate
+  double contact_tolerance = 5e-4;  // m, closer than this counts as touching
+  ActeePlacement actee;
+};
+
+struct ModelPart {
+  std::string name;
+  Arm arm = Arm::fixed;
+  Geometry geometry;
+  Eigen::Isometry3d in_arm = Eigen::Isometry3d::Identity();  // part pose in its arm's frame
+};
+
+struct ModelEffect {
+  EffectKind kind = EffectKind::pivot_friction;
+  std::string name;
+  bool enabled = true;
+  double param = 0;  // SI, the manifest's only parameter
+};
+
+struct Model {
+  // options
+  double timestep = 1e-3;           // s
+  double contact_tolerance = 5e-4;  // m
+
+  // acting object (Fig. 4); object frame as in spec.h
+  std::string object_name;
+  LeverPattern pattern = LeverPattern::type2;  // declared, checked against the regions
+  double arm_from = 0, arm_to = 0;             // m, signed extent of each arm
+  double theta_min = 0, theta_max = 0;         // rad, angle limits
+  double theta_rest = 0;                       // rad, where the untouched tool sits
+  double spring_constant = 0;                  // N/m, S_k
+  double spring_position = 0;                  // m, signed S_p
+  double spring_rest_length = 0;               // m, free length
+  double emphasis_from = 0, emphasis_to = 0;   // m, signed
+  double application_from = 0, application_to = 0;  // m, signed
+  double object_mass = 0;                      // kg
+  Eigen::Isometry3d object_start = Eigen::Isometry3d::Identity();  // functional pose in the world
+  std::vector<ModelPart> parts;
+  std::vector<ModelEffect> effects;
+
+  // actee (Fig. 6); absent when has_actee is false
+  bool has_actee = false;
+  std::string actee_name;
+  std::vector<Geometry> actee_geometry;  // one element when has_actee
+  Eigen::Vector3d actee_direction = Eigen::Vector3d::UnitY();  // A_d, unit, actee frame
+  double actee_limit = 0;       // N, A_pv
+  double actee_stiffness = 0;   // N/m
+  bool actee_breaks = true;
+  double actee_mass = 0;        // kg
+  Eigen::Isometry3d actee_start = Eigen::Isometry3d::Identity();  // world
+
+  // agent (Fig. 8); absent when has_agent is false
+  bool has_agent = false;
+  std::string agent_name;
+  double force_gain = 0;  // N/m, f_a of eq. 3
+  double max_force = 0;   // N, largest effort force
+  std::array<double, kFingers> tip_radius{};  // m
+  std::vector<Geometry> fingertip;            // one sphere per finger
+  std::array<std::array<double, kJoints>, kFingers> joint_min{}, joint_max{};  // rad
+
+  const Geometry& actee() const { return actee_geometry.front(); }
+};
+
+// Compiles specs into a model. The actee is optional (nullptr: none); so is
+// the agent, for models that are only looked at (describe, guides) and never
+// stepped.
+// Cross-file problems (a placement off the arm) are DataErrors naming the
+// spec's location.
+Model compile(const ObjectSpec& object, const ActeeSpec* actee, const AgentSpec* agent,
+              const ModelOptions& options);
+
+// Pose of the moving arm's frame in the object frame at opening angle theta.
+Eigen::Isometry3d moving_arm_pose(double theta_rad);
+
+// Spring compression d (m) at opening angle theta: free length minus the gap
+// at S_p, measured along the arc the spring end travels (|S_p| * theta).
+double spring_compression(const Model& m, double theta_rad);
+
+}  // namespace afford

@@ -1,0 +1,38 @@
+// Stage 1: place the bodies, and keep the actee's contact angle current.
+#include "stages.h"
+
+namespace afford {
+namespace {
+
+// The jaws' contact angle depends only on where the actee sits relative to
+// the object; recompute it (a bisection of FCL queries) only when that moves.
+void refresh_contact_angle(const Model& m, State& s) {
+  if (!m.has_actee || s.condition == ActeeCondition::broken) {
+    s.between_jaws = false;
+    return;
+  }
+  const Eigen::Isometry3d rel = s.object_pose.inverse() * s.actee_pose;
+  if (s.frame > 0 && rel.isApprox(s.actee_in_object, 0.0)) return;
+  s.actee_in_object = rel;
+  s.between_jaws = find_contact_angle(m, rel, *s.query, &s.contact_angle);
+  s.load_distance = s.between_jaws ? rel.translation().x() : 0.0;
+}
+
+}  // namespace
+
+void place_bodies(const Model& m, State& s, const Sample& sample) {
+  s.t = sample.t;
+  s.hand = sample.hand;
+  s.fingertip = sample.fingertip;
+  s.joint = sample.joint;
+  // A grasped object moves with the hand (Sec. 4.3.1: fingers move, posture
+  // kept); a held actee moves with the object.
+  if (s.grasped) s.object_pose = s.hand * s.hand_to_object;
+  if (s.held) {
+    s.actee_pose = s.object_pose * s.actee_in_object;
+  } else {
+    refresh_contact_angle(m, s);
+  }
+}
+
+}  // namespace afford

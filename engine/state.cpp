@@ -1,0 +1,103 @@
+// State: creation, reset, the frame, and the determinism hash.
+#include "state.h"
+
+#include <cstring>
+
+#include "stages.h"
+
+namespace afford {
+
+const std::array<const char*, kTermCount> kTermNames = {
+    "spring", "actee", "stop", "pivot_friction", "viscous_damping", "progressive_spring", "arm_inertia"};
+
+const char* condition_name(ActeeCondition c) {
+  switch (c) {
+    case ActeeCondition::intact: return "intact";
+    case ActeeCondition::squeezed: return "squeezed";
+    case ActeeCondition::broken: return "broken";
+  }
+  return "?";
+}
+
+std::unique_ptr<State> make_state(const Model& model) {
+  auto state = std::make_unique<State>();
+  state->query = std::make_unique<ContactQuery>();
+  reset(model, *state);
+  return state;
+}
+
+void reset(const Model& m, State& s) {
+  std::unique_ptr<ContactQuery> query = std::move(s.query);
+  s = State{};
+  s.query = query ? std::move(query) : std::make_unique<ContactQuery>();
+  s.object_pose = m.object_start;
+  s.theta = s.theta_command = m.theta_rest;
+  if (m.has_actee) {
+    s.actee_pose = m.actee_start;
+    s.actee_start_position = m.actee_start.translation();
+    s.actee_in_object = m.object_start.inverse() * m.actee_start;
+    s.between_jaws = find_contact_angle(m, s.actee_in_object, *s.query, &s.contact_angle);
+    s.load_distance = s.between_jaws ? s.actee_in_object.translation().x() : 0.0;
+  }
+}
+
+void step(const Model& m, State& s, const Sample& sample) {
+  if (!m.has_agent) throw LogicError("step() on a model compiled without an agent");
+  place_bodies(m, s, sample);  // 1. sample, grasped object, held actee
+  find_grasp(m, s);            // 2. agent-object contacts, the grasp
+  solve_lever(m, s);           // 3. angle, spring, forces, torques
+  update_actee(m, s);          // 4. intact, squeezed, broken; held
+  find_actee_contacts(m, s);   // 5. object-actee, agent-actee contacts
+  ++s.frame;
+}
+
+namespace {
+
+struct Hasher {
+  std::uint64_t h = 1469598103934665603ull;
+  void bytes(const void* p, size_t n) {
+    const auto* c = static_cast<const unsigned char*>(p);
+    for (size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
+  }
+  template <typename T>
+  void value(const T& v) { bytes(&v, sizeof v); }
+  void pose(const Eigen::Isometry3d& p) { bytes(p.matrix().data(), sizeof(double) * 16); }
+  void vec(const Eigen::Vector3d& v) { bytes(v.data(), sizeof(double) * 3); }
+  void contacts(const ContactSet& c) {
+    value(c.count);
+    for (int i = 0; i < std::min(c.count, kMaxContacts); ++i) {
+      vec(c.point[static_cast<size_t>(i)].point);
+      vec(c.point[static_cast<size_t>(i)].normal);
+      value(c.point[static_cast<size_t>(i)].distance);
+    }
+  }
+};
+
+}  // namespace
+
+std::uint64_t state_hash(const State& s) {
+  Hasher h;
+  h.value(s.t);
+  h.value(s.frame);
+  h.pose(s.object_pose);
+  h.pose(s.actee_pose);
+  for (const auto& f : s.fingertip) h.vec(f);
+  h.contacts(s.agent_object);
+  h.value(s.finger_on_arm);
+  h.value(s.grasped);
+  h.vec(s.thumb_in_object);
+  for (double x : {s.theta, s.omega, s.alpha, s.theta_command, s.effort_distance, s.load_distance,
+                   s.thumb_speed, s.compression, s.effort_force, s.effort_excess, s.contact_angle,
+                   s.actee_force, s.actee_load, s.actee_compression, s.peak_actee_load, s.broke_at}) {
+    h.value(x);
+  }
+  h.value(s.torque);
+  h.value(s.pattern);
+  h.value(s.condition);
+  for (bool b : {s.at_limit, s.blocked, s.between_jaws, s.held}) h.value(b);
+  h.contacts(s.object_actee);
+  h.contacts(s.agent_actee);
+  return h.h;
+}
+
+}  // namespace afford

@@ -1,0 +1,119 @@
+// The per-session mutable state (MuJoCo's mjData), grouped by the stage of
+// the frame that writes it. Sized once by make_state(); a frame allocates
+// nothing.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
+#include <memory>
+
+#include "geometry.h"
+#include "model.h"
+#include "sample.h"
+#include "spec.h"
+
+namespace afford {
+
+inline constexpr int kMaxContacts = 16;  // per relation; more are counted, not stored
+
+// Named torque terms about the fulcrum, N*m, positive = opening (resisting
+// the agent's squeeze). The agent's torque balances their sum.
+// kStop is the reaction of the angle limit when the agent presses the arm
+// against it; with it the terms balance the agent exactly in every case.
+enum Term {
+  kSpring = 0,
+  kActee,
+  kStop,
+  kPivotFriction,
+  kViscousDamping,
+  kProgressiveSpring,
+  kArmInertia,
+  kTermCount
+};
+extern const std::array<const char*, kTermCount> kTermNames;
+
+enum class ActeeCondition { intact, squeezed, broken };
+const char* condition_name(ActeeCondition c);
+
+// Contacts of one relation (agent-object, object-actee, agent-actee).
+struct ContactSet {
+  int count = 0;                                   // contact points, one per touching pair
+  std::array<ContactPoint, kMaxContacts> point{};  // the first kMaxContacts of them
+  void clear() { count = 0; }
+  void add(const ContactPoint& p) {
+    if (count < kMaxContacts) point[static_cast<size_t>(count)] = p;
+    ++count;
+  }
+};
+
+struct State {
+  // --- time
+  double t = 0;          // s, of the last sample
+  std::int64_t frame = 0;
+
+  // --- place: bodies in the world
+  Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();  // world from object frame
+  Eigen::Isometry3d actee_pose = Eigen::Isometry3d::Identity();   // world from actee frame
+  Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();         // world, from the sample
+  std::array<Eigen::Vector3d, kFingers> fingertip{};              // m, world
+  std::array<std::array<double, kJoints>, kFingers> joint{};      // rad
+
+  // --- agent-object contacts and the grasp
+  ContactSet agent_object;
+  std::array<std::uint8_t, kFingers> finger_on_arm{};  // bit 0: fixed arm, bit 1: moving arm
+  bool grasped = false;  // thumb on the moving arm, another finger on the fixed arm
+  Eigen::Isometry3d hand_to_object = Eigen::Isometry3d::Identity();  // object in hand frame while grasped
+  Eigen::Vector3d thumb_in_object = Eigen::Vector3d::Zero();  // m, last thumb position, object frame
+
+  // --- lever-spring solver
+  double theta = 0;          // rad, opening angle
+  double omega = 0;          // rad/s, d theta / dt
+  double alpha = 0;          // rad/s^2
+  double theta_command = 0;  // rad, where the thumb alone would put the arm (eq. 1)
+  double effort_distance = 0;  // m, D_ag: signed distance of the thumb along the moving arm
+  double load_distance = 0;    // m, D_ac: signed distance of the actee along the arm
+  LeverPattern pattern = LeverPattern::type2;  // as the effort and load sit now (Step 2-1)
+  double thumb_speed = 0;        // m/s, v of eq. 2, along L_d, closing positive
+  double compression = 0;        // m, spring compression d of eq. 4
+  std::array<double, kTermCount> torque{};  // N*m, opening positive
+  double effort_force = 0;       // N, F_ag = F_agr at the emphasis, along L_d
+  double effort_excess = 0;      // m, how far the thumb is past the blocked arm
+  bool at_limit = false;         // the arm rests on theta_min or theta_max
+  bool blocked = false;          // the actee stops the arm
+
+  // --- actee
+  bool between_jaws = false;     // the moving jaw can close on the actee
+  double contact_angle = 0;      // rad, theta at which the jaws touch the actee (between_jaws)
+  Eigen::Isometry3d actee_in_object = Eigen::Isometry3d::Identity();  // while held or for contact_angle
+  double actee_force = 0;        // N, F_acr: force between jaws and actee
+  double actee_load = 0;         // N, its component along A_d, compared with the limit
+  double actee_compression = 0;  // m
+  double peak_actee_load = 0;    // N, largest actee_load so far
+  ActeeCondition condition = ActeeCondition::intact;
+  double broke_at = -1;          // s, when it broke; -1 if it has not
+  bool held = false;             // gripped between both jaws
+  Eigen::Vector3d actee_start_position = Eigen::Vector3d::Zero();  // m, world
+
+  // --- object-actee and agent-actee contacts
+  ContactSet object_actee;
+  ContactSet agent_actee;
+
+  // --- scratch: reusable query objects (not part of the simulated state)
+  std::unique_ptr<ContactQuery> query;
+};
+
+// A fresh state for the model: bodies at their start poses, lever at rest.
+std::unique_ptr<State> make_state(const Model& model);
+void reset(const Model& model, State& state);
+
+// One frame (paper Sec. 4.3): place, agent-object contacts and the grasp,
+// the lever-spring solver, the actee, object-actee and agent-actee contacts.
+// Allocates nothing. The same model, state and samples give the same state,
+// bit for bit.
+void step(const Model& model, State& state, const Sample& sample);
+
+// FNV-1a hash over every simulated field of the state, for determinism tests.
+std::uint64_t state_hash(const State& state);
+
+}  // namespace afford

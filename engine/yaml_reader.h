@@ -1,0 +1,87 @@
+// Reading user YAML with the location of every value, so that any mistake,
+// found now or later in compilation, is reported as file:line:col.
+// Unknown keys, duplicate keys, wrong types and missing keys are errors.
+#pragma once
+
+#include <Eigen/Core>
+#include <initializer_list>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+#include <yaml-cpp/yaml.h>
+
+#include "errors.h"
+#include "units.h"
+
+namespace afford {
+
+// A YAML node and the file it came from.
+class Node {
+ public:
+  Node(YAML::Node node, std::shared_ptr<const std::string> file);
+
+  SourceLoc loc() const;
+  const YAML::Node& yaml() const { return node_; }
+  bool is_map() const { return node_.IsMap(); }
+  bool is_sequence() const { return node_.IsSequence(); }
+  bool is_scalar() const { return node_.IsScalar(); }
+  size_t size() const { return node_.size(); }
+  Node operator[](size_t i) const;  // sequence element
+  Node child(const YAML::Node& node) const;  // a node of the same file
+
+  // How the node reads in a "found ..." clause: "'abc'", "a sequence", ...
+  std::string found() const;
+  [[noreturn]] void fail(const std::string& expected) const;  // found = found()
+  [[noreturn]] void fail(const std::string& expected, const std::string& found) const;
+
+ private:
+  YAML::Node node_;
+  std::shared_ptr<const std::string> file_;
+};
+
+// Loads a YAML file; syntax errors become DataErrors with the parser's mark.
+Node load_yaml_file(const std::string& path);
+Node load_yaml_string(const std::string& text, const std::string& name);
+
+// Reads the keys of one mapping. Every key read through it becomes known;
+// finish() rejects the keys nobody asked for, with "did you mean".
+class MapReader {
+ public:
+  MapReader(const Node& node, std::string what);  // what: "the lever", ...
+  ~MapReader() = default;
+  MapReader(const MapReader&) = delete;
+  MapReader& operator=(const MapReader&) = delete;
+
+  Node required(std::string_view key);
+  std::optional<Node> optional(std::string_view key);
+  bool has(std::string_view key) const;
+  const Node& node() const { return node_; }
+  // Every key of the map, in file order (for maps keyed by user names).
+  std::vector<std::pair<std::string, Node>> entries() const;
+  void finish();
+
+ private:
+  Node node_;
+  std::string what_;
+  std::vector<std::string> known_;
+};
+
+// Typed scalar reads. Each fails with file:line:col on a wrong type.
+std::string read_string(const Node& node);
+std::string read_name(const Node& node);  // [A-Za-z_][A-Za-z0-9_-]*
+bool read_bool(const Node& node);
+double read_number(const Node& node);  // finite, bare
+int read_int(const Node& node);
+double read_quantity(const Node& node, const Dimension& expected);  // SI value
+Eigen::Vector3d read_vector(const Node& node, const Dimension& expected);
+Eigen::Vector3d read_plain_vector(const Node& node);  // three bare numbers
+// One of `choices`, with "did you mean" on a miss.
+std::string read_choice(const Node& node, std::initializer_list<const char*> choices);
+
+// Range checks that report at the node's location.
+double require_positive(const Node& node, double value);
+double require_non_negative(const Node& node, double value);
+
+}  // namespace afford
