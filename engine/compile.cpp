@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "model.h"
+#include "stages.h"
 #include "units.h"
 
 namespace afford {
@@ -72,6 +73,22 @@ void compile_actee(const ActeeSpec& a, const ModelOptions& options, Model& m) {
   Eigen::Isometry3d in_object = Eigen::Isometry3d::Identity();
   in_object.translation() = Eigen::Vector3d(r, lift, 0);
   m.actee_start = m.object_start * in_object;
+  // An actee placed in the jaws must be one they can close on.
+  ContactQuery query;
+  double theta_c = 0;
+  const JawFit fit = find_contact_angle(m, in_object, query, &theta_c, nullptr);
+  const std::string where = "at " + format_quantity(r, dim::length);
+  const double thickness = m.actee().support(Eigen::Vector3d::UnitY()) + lift;
+  if (fit == JawFit::too_large) {
+    fail(options.actee.loc,
+         "an actee that fits between the jaws " + where + " (opening " +
+             format_quantity(std::abs(r) * std::sin(m.theta_max), dim::length) + " at theta_max)",
+         a.name + ", " + format_quantity(thickness, dim::length) + " thick");
+  }
+  if (fit != JawFit::fits) {
+    fail(options.actee.loc, "an actee the jaws can close on " + where,
+         a.name + ", which the moving jaw " + (fit == JawFit::out_of_reach ? "never reaches" : "would push off the fixed jaw"));
+  }
 }
 
 void compile_agent(const AgentSpec& a, Model& m) {

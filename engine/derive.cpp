@@ -41,7 +41,7 @@ ActeeFit fit_actee(const Model& m) {
     Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
     at.translation() = Eigen::Vector3d(r, lift, 0);
     double theta_c = 0;
-    if (!find_contact_angle(m, at, query, &theta_c)) continue;
+    if (find_contact_angle(m, at, query, &theta_c, nullptr) != JawFit::fits) continue;
     if (!found) {
       found = true;
       fit.from = r;

@@ -24,12 +24,12 @@ double moving_gap(const Model& m, const Eigen::Isometry3d& actee_in_object, Cont
 
 }  // namespace
 
-bool find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_object,
-                        ContactQuery& query, double* theta_c) {
+JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_object,
+                          ContactQuery& query, double* theta_c, std::vector<JawContact>* contacts) {
   // Fully open and already touching: it does not fit in the jaws.
-  if (moving_gap(m, actee_in_object, query, m.theta_max) <= 0) return false;
+  if (moving_gap(m, actee_in_object, query, m.theta_max) <= 0) return JawFit::too_large;
   // Fully closed and still apart: the moving jaw never reaches it.
-  if (moving_gap(m, actee_in_object, query, m.theta_min) > 0) return false;
+  if (moving_gap(m, actee_in_object, query, m.theta_min) > 0) return JawFit::out_of_reach;
   double open = m.theta_max, closed = m.theta_min;
   for (int i = 0; i < 60 && open - closed > 1e-12; ++i) {
     const double mid = 0.5 * (open + closed);
@@ -37,14 +37,28 @@ bool find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_object
   }
   // The moving jaw presses the actee onto the fixed jaw; an actee not resting
   // on the fixed arm would be pushed away rather than gripped.
-  for (const ModelPart& part : m.parts) {
-    if (part.arm == Arm::fixed &&
-        query.distance(part.geometry, part.in_arm, m.actee(), actee_in_object) <= m.contact_tolerance) {
-      *theta_c = open;
-      return true;
+  bool on_fixed = false;
+  for (size_t i = 0; i < m.parts.size(); ++i) {
+    const ModelPart& part = m.parts[i];
+    const Eigen::Isometry3d pose = part_in_object(part, open);
+    ContactPoint c;
+    // Touching at the contact angle, within the bisection's last step.
+    const bool touching = query.contact(part.geometry, pose, m.actee(), actee_in_object,
+                                        m.contact_tolerance, &c);
+    on_fixed = on_fixed || (touching && part.arm == Arm::fixed);
+    if (contacts == nullptr) continue;
+    JawContact& jc = (*contacts)[i];
+    jc.touching = touching;
+    if (touching) {
+      const Eigen::Isometry3d arm = part.arm == Arm::moving ? moving_arm_pose(open) : Eigen::Isometry3d::Identity();
+      jc.in_arm.point = arm.inverse() * c.point;
+      jc.in_arm.normal = arm.linear().transpose() * c.normal;
+      jc.in_arm.distance = c.distance;
     }
   }
-  return false;
+  if (!on_fixed) return JawFit::not_on_fixed_jaw;
+  *theta_c = open;
+  return JawFit::fits;
 }
 
 }  // namespace afford

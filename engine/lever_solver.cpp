@@ -64,8 +64,8 @@ void follow_thumb(const Model& m, State& s) {
   const double c = std::cos(s.theta), sn = std::sin(s.theta);
   s.effort_distance = c * thumb.x() + sn * thumb.y();  // along the moving arm
   const double side = s.effort_distance >= 0 ? 1.0 : -1.0;
-  const Eigen::Vector3d closing(side * sn, -side * c, 0.0);  // L_d, unit
-  const double advance = motion.dot(closing);                // eq. 1
+  s.closing_direction = Eigen::Vector3d(side * sn, -side * c, 0.0);  // L_d, unit
+  const double advance = motion.dot(s.closing_direction);            // eq. 1
   s.thumb_speed = advance / m.timestep;                      // eq. 2
   s.theta_command -= advance / std::max(std::abs(s.effort_distance), kMinLeverArm);
 }
@@ -110,24 +110,30 @@ void solve_lever(const Model& m, State& s) {
     s.alpha = (s.omega - omega_before) / m.timestep;
     const double motion = motion_torques(m, s);
     double effort = motion / b + m.force_gain * excess;
-    // The hand cannot push harder than max_force: the thumb slips back until
-    // it balances there, and the squeeze it could not make is dropped.
+    // The hand cannot push harder than max_force: past that point more
+    // travel of the tracked thumb adds no force, and the squeeze it would
+    // have made is dropped. The command stays where the thumb is, so the
+    // thumb has to come back that far before the force falls.
     if (excess > 0 && effort > m.max_force) {
-      const double capped_excess = std::max(0.0, (m.max_force - motion / b) / m.force_gain);
+      excess = std::max(0.0, (m.max_force - motion / b) / m.force_gain);
       if (s.blocked) {
-        actee_force = std::min(actee_force, m.force_gain * capped_excess * b / a);
+        actee_force = std::min(actee_force, m.force_gain * excess * b / a);
         theta = s.contact_angle - actee_force / (m.actee_stiffness * a);
+        s.theta = theta;
       }
-      excess = capped_excess;
       effort = motion / b + m.force_gain * excess;
-      s.theta = theta;
-      s.theta_command = theta - excess / b;
     }
     s.torque[kActee] = actee_force * a;
     // Whatever of the agent's torque neither the terms nor the actee take
     // goes into the angle limit.
     s.torque[kStop] = effort * b - motion - s.torque[kActee];
     s.effort_force = effort;
+    // The thumb as contacts see it: held on the arm's surface, however far
+    // the tracked thumb went past it (a haptic proxy, the "god object").
+    // The tracked thumb turned back about the pivot by how far it is ahead
+    // of the arm.
+    const Eigen::Isometry3d back = moving_arm_pose(std::max(0.0, s.theta - cmd));
+    s.thumb_proxy = s.object_pose * (back * s.thumb_in_object);
   } else {
     // Untouched, the spring returns the tool to its rest angle.
     s.theta = theta;

@@ -18,6 +18,12 @@ void require_on_arm(const Node& node, double distance, const RangeSpec& arm) {
   }
 }
 
+// A {from, to} region on the arm: reports at the value that is off it.
+void require_region_on_arm(const Node& region_node, const RangeSpec& region, const RangeSpec& arm) {
+  require_on_arm(region_node.child(region_node.yaml()["from"]), region.from, arm);
+  require_on_arm(region_node.child(region_node.yaml()["to"]), region.to, arm);
+}
+
 LeverSpec read_lever(const Node& node) {
   MapReader m(node, "the lever");
   LeverSpec lever;
@@ -174,12 +180,10 @@ ObjectSpec read_object(const Node& root) {
   o.spring = read_spring(m.required("spring"), o.lever);
   const Node emphasis = m.required("emphasis");
   o.emphasis = read_range(emphasis, "the emphasis region");
-  require_on_arm(emphasis, o.emphasis.from, o.lever.arm);
-  require_on_arm(emphasis, o.emphasis.to, o.lever.arm);
+  require_region_on_arm(emphasis, o.emphasis, o.lever.arm);
   const Node application = m.required("application");
   o.application = read_range(application, "the application region");
-  require_on_arm(application, o.application.from, o.lever.arm);
-  require_on_arm(application, o.application.to, o.lever.arm);
+  require_region_on_arm(application, o.application, o.lever.arm);
   check_pattern(o);
   const Node parts = m.required("parts");
   if (!parts.is_sequence() || parts.size() == 0) parts.fail("a sequence of parts");

@@ -11,10 +11,17 @@ void refresh_contact_angle(const Model& m, State& s) {
     s.between_jaws = false;
     return;
   }
+  // Compared bit for bit on the world poses: the relative pose, computed
+  // again, would differ in its last bits and trigger needless bisections.
+  if (s.object_pose.matrix() == s.placed_object.matrix() && s.actee_pose.matrix() == s.placed_actee.matrix()) {
+    return;
+  }
+  s.placed_object = s.object_pose;
+  s.placed_actee = s.actee_pose;
   const Eigen::Isometry3d rel = s.object_pose.inverse() * s.actee_pose;
-  if (s.frame > 0 && rel.isApprox(s.actee_in_object, 0.0)) return;
   s.actee_in_object = rel;
-  s.between_jaws = find_contact_angle(m, rel, *s.query, &s.contact_angle);
+  s.between_jaws =
+      find_contact_angle(m, rel, *s.query, &s.contact_angle, &s.jaw_contact) == JawFit::fits;
   s.load_distance = s.between_jaws ? rel.translation().x() : 0.0;
 }
 

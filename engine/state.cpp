@@ -36,7 +36,11 @@ void reset(const Model& m, State& s) {
     s.actee_pose = m.actee_start;
     s.actee_start_position = m.actee_start.translation();
     s.actee_in_object = m.object_start.inverse() * m.actee_start;
-    s.between_jaws = find_contact_angle(m, s.actee_in_object, *s.query, &s.contact_angle);
+    s.placed_object = s.object_pose;
+    s.placed_actee = s.actee_pose;
+    s.jaw_contact.assign(m.parts.size(), JawContact{});
+    s.between_jaws = find_contact_angle(m, s.actee_in_object, *s.query, &s.contact_angle,
+                                        &s.jaw_contact) == JawFit::fits;
     s.load_distance = s.between_jaws ? s.actee_in_object.translation().x() : 0.0;
   }
 }
@@ -44,10 +48,10 @@ void reset(const Model& m, State& s) {
 void step(const Model& m, State& s, const Sample& sample) {
   if (!m.has_agent) throw LogicError("step() on a model compiled without an agent");
   place_bodies(m, s, sample);  // 1. sample, grasped object, held actee
-  find_grasp(m, s);            // 2. agent-object contacts, the grasp
+  update_grasp(m, s);          // 2. the grasp, from the last frame's contacts
   solve_lever(m, s);           // 3. angle, spring, forces, torques
   update_actee(m, s);          // 4. intact, squeezed, broken; held
-  find_actee_contacts(m, s);   // 5. object-actee, agent-actee contacts
+  find_contacts(m, s);         // 5. every contact at the solved angle
   ++s.frame;
 }
 
@@ -86,6 +90,7 @@ std::uint64_t state_hash(const State& s) {
   h.value(s.finger_on_arm);
   h.value(s.grasped);
   h.vec(s.thumb_in_object);
+  h.vec(s.thumb_proxy);
   for (double x : {s.theta, s.omega, s.alpha, s.theta_command, s.effort_distance, s.load_distance,
                    s.thumb_speed, s.compression, s.effort_force, s.effort_excess, s.contact_angle,
                    s.actee_force, s.actee_load, s.actee_compression, s.peak_actee_load, s.broke_at}) {

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "geometry.h"
 #include "model.h"
@@ -47,6 +48,13 @@ struct ContactSet {
   }
 };
 
+// Where one part touches an actee resting in the jaws, found when it was
+// placed: the jaws hold it, so the contact moves with the part.
+struct JawContact {
+  bool touching = false;
+  ContactPoint in_arm;  // point and normal in the part's arm frame
+};
+
 struct State {
   // --- time
   double t = 0;          // s, of the last sample
@@ -59,9 +67,7 @@ struct State {
   std::array<Eigen::Vector3d, kFingers> fingertip{};              // m, world
   std::array<std::array<double, kJoints>, kFingers> joint{};      // rad
 
-  // --- agent-object contacts and the grasp
-  ContactSet agent_object;
-  std::array<std::uint8_t, kFingers> finger_on_arm{};  // bit 0: fixed arm, bit 1: moving arm
+  // --- the grasp (from the last frame's agent-object contacts)
   bool grasped = false;  // thumb on the moving arm, another finger on the fixed arm
   Eigen::Isometry3d hand_to_object = Eigen::Isometry3d::Identity();  // object in hand frame while grasped
   Eigen::Vector3d thumb_in_object = Eigen::Vector3d::Zero();  // m, last thumb position, object frame
@@ -79,6 +85,8 @@ struct State {
   std::array<double, kTermCount> torque{};  // N*m, opening positive
   double effort_force = 0;       // N, F_ag = F_agr at the emphasis, along L_d
   double effort_excess = 0;      // m, how far the thumb is past the blocked arm
+  Eigen::Vector3d closing_direction = Eigen::Vector3d::Zero();  // L_d at the emphasis, unit, object frame
+  Eigen::Vector3d thumb_proxy = Eigen::Vector3d::Zero();  // m, world: the thumb kept on the arm's surface
   bool at_limit = false;         // the arm rests on theta_min or theta_max
   bool blocked = false;          // the actee stops the arm
 
@@ -86,6 +94,8 @@ struct State {
   bool between_jaws = false;     // the moving jaw can close on the actee
   double contact_angle = 0;      // rad, theta at which the jaws touch the actee (between_jaws)
   Eigen::Isometry3d actee_in_object = Eigen::Isometry3d::Identity();  // while held or for contact_angle
+  Eigen::Isometry3d placed_object = Eigen::Isometry3d::Identity();    // world poses contact_angle was found for
+  Eigen::Isometry3d placed_actee = Eigen::Isometry3d::Identity();
   double actee_force = 0;        // N, F_acr: force between jaws and actee
   double actee_load = 0;         // N, its component along A_d, compared with the limit
   double actee_compression = 0;  // m
@@ -95,7 +105,11 @@ struct State {
   bool held = false;             // gripped between both jaws
   Eigen::Vector3d actee_start_position = Eigen::Vector3d::Zero();  // m, world
 
-  // --- object-actee and agent-actee contacts
+  std::vector<JawContact> jaw_contact;  // per model part, sized once by reset()
+
+  // --- contacts at the solved angle
+  ContactSet agent_object;
+  std::array<std::uint8_t, kFingers> finger_on_arm{};  // bit 0: fixed arm, bit 1: moving arm
   ContactSet object_actee;
   ContactSet agent_actee;
 
@@ -107,8 +121,8 @@ struct State {
 std::unique_ptr<State> make_state(const Model& model);
 void reset(const Model& model, State& state);
 
-// One frame (paper Sec. 4.3): place, agent-object contacts and the grasp,
-// the lever-spring solver, the actee, object-actee and agent-actee contacts.
+// One frame (paper Sec. 4.3): place, the grasp, the lever-spring solver,
+// the actee, then the contacts at the solved angle.
 // Allocates nothing. The same model, state and samples give the same state,
 // bit for bit.
 void step(const Model& model, State& state, const Sample& sample);

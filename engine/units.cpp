@@ -64,7 +64,8 @@ std::string Dimension::str() const {
     const int e = exponent[i];
     if (e == 0) continue;
     std::string& side = e > 0 ? num : den;
-    if (!side.empty()) side += "*";
+    // Read left to right, so each factor below the line gets its own '/'.
+    if (!side.empty()) side += e > 0 ? "*" : "/";
     side += kBase[i];
     if (std::abs(e) != 1) side += "^" + std::to_string(std::abs(e));
   }
@@ -163,6 +164,10 @@ std::optional<Quantity> parse_unit(std::string_view text, std::string* error) {
       return std::nullopt;
     }
     ++i;
+    if (i == text.size()) {  // "N/" is not "N"
+      *error = "a unit name after '" + std::string(1, text[i - 1]) + "'";
+      return std::nullopt;
+    }
   }
   return q;
 }

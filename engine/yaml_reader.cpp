@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -59,6 +60,10 @@ void Node::fail(const std::string& expected, const std::string& found) const {
 }
 
 Node load_yaml_file(const std::string& path) {
+  std::error_code ec;  // a directory opens, then reads as an empty file
+  if (std::filesystem::is_directory(path, ec)) {
+    throw DataError(SourceLoc{path, 0, 0}, "expected a readable file, found a directory");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DataError(SourceLoc{path, 0, 0}, "expected a readable file, found none");
   std::ostringstream text;

@@ -1,0 +1,86 @@
+// Stage 5: the contacts of the three relations at the solved angle.
+// Agent-object: fingertip spheres against the arms' parts, the thumb at its
+// proxy on the arm's surface. Object-actee: from the placement's cache while
+// the actee rests in the jaws, an FCL query otherwise. Agent-actee:
+// fingertips against the actee. Broad boxes first, so that far pairs cost
+// no query.
+#include "stages.h"
+
+namespace afford {
+namespace {
+
+void agent_object(const Model& m, State& s) {
+  s.agent_object.clear();
+  s.finger_on_arm.fill(0);
+  const Eigen::Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
+  ContactPoint c;
+  for (size_t f = 0; f < kFingers; ++f) {
+    Eigen::Isometry3d tip = Eigen::Isometry3d::Identity();
+    tip.translation() = (f == 0 && s.grasped) ? s.thumb_proxy : s.fingertip[f];
+    for (const ModelPart& part : m.parts) {
+      const Eigen::Isometry3d pose = (part.arm == Arm::moving ? moving : s.object_pose) * part.in_arm;
+      if (boxes_apart(m.fingertip[f], tip, part.geometry, pose, m.contact_tolerance)) continue;
+      if (s.query->contact(m.fingertip[f], tip, part.geometry, pose, m.contact_tolerance, &c)) {
+        s.agent_object.add(c);
+        s.finger_on_arm[f] |= static_cast<std::uint8_t>(part.arm == Arm::moving ? 2 : 1);
+      }
+    }
+  }
+}
+
+void object_actee(const Model& m, State& s) {
+  s.object_actee.clear();
+  if (s.between_jaws) {
+    // It rests on the fixed jaw; the moving jaw touches it once closed to
+    // the contact angle (within the tolerance, as an angle at the actee).
+    const double slack = m.contact_tolerance / std::max(std::abs(s.load_distance), 1e-6);
+    const bool closed_on = s.theta <= s.contact_angle + slack;
+    const Eigen::Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
+    for (size_t i = 0; i < m.parts.size(); ++i) {
+      const JawContact& jc = s.jaw_contact[i];
+      const bool on_moving = m.parts[i].arm == Arm::moving;
+      if (!jc.touching || (on_moving && !closed_on)) continue;
+      const Eigen::Isometry3d& arm = on_moving ? moving : s.object_pose;
+      s.object_actee.add(ContactPoint{arm * jc.in_arm.point, arm.linear() * jc.in_arm.normal, jc.in_arm.distance});
+    }
+    return;
+  }
+  const Eigen::Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
+  ContactPoint c;
+  for (const ModelPart& part : m.parts) {
+    const Eigen::Isometry3d pose = (part.arm == Arm::moving ? moving : s.object_pose) * part.in_arm;
+    if (boxes_apart(part.geometry, pose, m.actee(), s.actee_pose, m.contact_tolerance)) continue;
+    if (s.query->contact(part.geometry, pose, m.actee(), s.actee_pose, m.contact_tolerance, &c)) {
+      s.object_actee.add(c);
+    }
+  }
+}
+
+void agent_actee(const Model& m, State& s) {
+  s.agent_actee.clear();
+  ContactPoint c;
+  for (size_t f = 0; f < kFingers; ++f) {
+    Eigen::Isometry3d tip = Eigen::Isometry3d::Identity();
+    tip.translation() = s.fingertip[f];
+    if (boxes_apart(m.fingertip[f], tip, m.actee(), s.actee_pose, m.contact_tolerance)) continue;
+    if (s.query->contact(m.fingertip[f], tip, m.actee(), s.actee_pose, m.contact_tolerance, &c)) {
+      s.agent_actee.add(c);
+    }
+  }
+}
+
+}  // namespace
+
+void find_contacts(const Model& m, State& s) {
+  agent_object(m, s);
+  // A broken actee is fragments: nothing left to touch or grip.
+  if (!m.has_actee || s.condition == ActeeCondition::broken) {
+    s.object_actee.clear();
+    s.agent_actee.clear();
+    return;
+  }
+  object_actee(m, s);
+  agent_actee(m, s);
+}
+
+}  // namespace afford
