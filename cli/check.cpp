@@ -12,7 +12,8 @@ int run_check(const Args& args) {
   int errors = 0;
   for (const std::string& path : args) {
     try {
-      std::cout << path << ": ok (" << validate_file(path) << ")\n";
+      const std::string what = validate_file(path);  // before printing: it may throw
+      std::cout << path << ": ok (" << what << ")\n";
     } catch (const DataError& e) {
       std::cerr << e.what() << "\n";
       ++errors;

@@ -4,7 +4,8 @@
 namespace afford {
 
 ActeeSpec read_actee(const Node& root) {
-  MapReader m(root, "an actee file");
+  MapReader m(root, "an actee file",
+              {"actee", "description", "shape", "mass", "force_direction", "limit", "stiffness", "breaks"});
   ActeeSpec a;
   a.loc = root.loc();
   a.file = root.loc().file;
@@ -20,7 +21,6 @@ ActeeSpec read_actee(const Node& root) {
   const Node k = m.required("stiffness");
   a.stiffness = require_positive(k, read_quantity(k, dim::stiffness));
   a.breaks = read_bool(m.required("breaks"));
-  m.finish();
   return a;
 }
 

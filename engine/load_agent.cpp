@@ -9,7 +9,7 @@ const std::array<const char*, kJoints> kJointNames = {"distal", "proximal", "met
 namespace {
 
 FingerSpec read_finger(const Node& node, const std::string& name) {
-  MapReader m(node, "the " + name);
+  MapReader m(node, "the " + name, {"tip_radius", kJointNames[0], kJointNames[1], kJointNames[2]});
   FingerSpec f;
   const Node r = m.required("tip_radius");
   f.tip_radius = require_positive(r, read_quantity(r, dim::length));
@@ -20,14 +20,13 @@ FingerSpec read_finger(const Node& node, const std::string& name) {
     f.joint_max[j] = read_quantity(range[1], dim::angle);
     if (!(f.joint_max[j] > f.joint_min[j])) range[1].fail("a maximum above the minimum");
   }
-  m.finish();
   return f;
 }
 
 }  // namespace
 
 AgentSpec read_agent(const Node& root) {
-  MapReader m(root, "an agent file");
+  MapReader m(root, "an agent file", {"agent", "description", "force_gain", "max_force", "fingers"});
   AgentSpec a;
   a.loc = root.loc();
   a.file = root.loc().file;
@@ -37,12 +36,10 @@ AgentSpec read_agent(const Node& root) {
   a.force_gain = require_positive(gain, read_quantity(gain, dim::stiffness));
   const Node max_force = m.required("max_force");
   a.max_force = require_positive(max_force, read_quantity(max_force, dim::force));
-  MapReader fingers(m.required("fingers"), "the fingers");
+  MapReader fingers(m.required("fingers"), "the fingers", {kFingerNames.begin(), kFingerNames.end()});
   for (int i = 0; i < kFingers; ++i) {
     a.fingers[static_cast<size_t>(i)] = read_finger(fingers.required(kFingerNames[i]), kFingerNames[i]);
   }
-  fingers.finish();
-  m.finish();
   return a;
 }
 

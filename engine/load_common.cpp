@@ -23,8 +23,8 @@ Eigen::Vector3d read_positive_vector(const Node& node, const Dimension& d) {
 }  // namespace
 
 ShapeSpec read_shape(const Node& node) {
-  MapReader outer(node, "a shape");
   static const char* const kKinds[] = {"sphere", "box", "capsule", "cylinder", "ellipsoid", "convex"};
+  MapReader outer(node, "a shape", {kKinds, kKinds + 6});
   const auto entries = outer.entries();
   if (entries.size() != 1) {
     node.fail("exactly one of sphere, box, capsule, cylinder, ellipsoid, convex",
@@ -33,17 +33,14 @@ ShapeSpec read_shape(const Node& node) {
   ShapeSpec shape;
   shape.loc = node.loc();
   const std::string kind = entries[0].first;
-  int index = -1;
+  int index = 0;
   for (int i = 0; i < 6; ++i) {
-    if (kind == kKinds[i]) index = i;
-  }
-  if (index < 0) {
-    // Let the reader report the unknown key with its "did you mean".
-    for (const char* k : kKinds) (void)outer.optional(k);
-    outer.finish();
+    if (kind == kKinds[i]) index = i;  // the reader has rejected any other
   }
   shape.kind = static_cast<ShapeKind>(index);
-  MapReader m(outer.required(kind), "a " + kind);
+  static const std::vector<std::string> kKeys[] = {
+      {"radius"}, {"size"}, {"radius", "length"}, {"radius", "length"}, {"radii"}, {"unit", "vertices"}};
+  MapReader m(outer.required(kind), "a " + kind, kKeys[index]);
   switch (shape.kind) {
     case ShapeKind::sphere: {
       const Node r = m.required("radius");
@@ -77,8 +74,6 @@ ShapeSpec read_shape(const Node& node) {
       break;
     }
   }
-  m.finish();
-  outer.finish();
   return shape;
 }
 
@@ -96,13 +91,12 @@ PoseSpec read_pose(MapReader& map) {
 }
 
 RangeSpec read_range(const Node& node, const std::string& what) {
-  MapReader m(node, what);
+  MapReader m(node, what, {"from", "to"});
   RangeSpec range;
   range.loc = node.loc();
   range.from = read_quantity(m.required("from"), dim::length);
   const Node to = m.required("to");
   range.to = read_quantity(to, dim::length);
-  m.finish();
   if (!(range.to > range.from)) {
     to.fail("'to' greater than 'from' (" + format_quantity(range.from, dim::length) + ")");
   }

@@ -25,7 +25,7 @@ void require_region_on_arm(const Node& region_node, const RangeSpec& region, con
 }
 
 LeverSpec read_lever(const Node& node) {
-  MapReader m(node, "the lever");
+  MapReader m(node, "the lever", {"pattern", "arm", "theta_min", "theta_max", "rest"});
   LeverSpec lever;
   lever.loc = node.loc();
   const Node pattern = m.required("pattern");
@@ -44,7 +44,6 @@ LeverSpec read_lever(const Node& node) {
   lever.theta_min = read_quantity(tmin, dim::angle);
   lever.theta_max = read_quantity(tmax, dim::angle);
   lever.theta_rest = read_quantity(rest, dim::angle);
-  m.finish();
   if (lever.theta_min < 0) tmin.fail("an opening angle of 0 deg or more");
   if (!(lever.theta_max > lever.theta_min)) {
     tmax.fail("theta_max greater than theta_min (" + format_quantity(lever.theta_min, dim::angle) + ")");
@@ -57,7 +56,7 @@ LeverSpec read_lever(const Node& node) {
 }
 
 SpringSpec read_spring(const Node& node, const LeverSpec& lever) {
-  MapReader m(node, "the spring");
+  MapReader m(node, "the spring", {"constant", "position", "rest_length", "preload"});
   SpringSpec spring;
   spring.loc = node.loc();
   const Node k = m.required("constant");
@@ -68,7 +67,6 @@ SpringSpec read_spring(const Node& node, const LeverSpec& lever) {
   if (spring.position == 0) pos.fail("a spring away from the fulcrum");
   const std::optional<Node> rest_length = m.optional("rest_length");
   const std::optional<Node> preload = m.optional("preload");
-  m.finish();
   if (rest_length.has_value() == preload.has_value()) {
     node.fail("exactly one of rest_length and preload",
               rest_length ? "both" : "neither");
@@ -110,19 +108,17 @@ void check_pattern(const ObjectSpec& o) {
 }
 
 std::vector<EffectSpec> read_effects(const Node& node) {
-  MapReader m(node, "the effects");
   std::vector<std::string> names;
   for (const EffectManifest& e : effect_registry()) names.emplace_back(e.name);
+  MapReader m(node, "the effects", names);  // rejects unknown effects, with "did you mean"
   std::vector<EffectSpec> effects;
   for (const auto& [name, value] : m.entries()) {
     const EffectManifest* manifest = find_effect(name);
-    if (manifest == nullptr) {
-      for (const std::string& n : names) (void)m.optional(n);
-      m.finish();  // reports the unknown effect with "did you mean"
-      throw LogicError("unknown effect passed MapReader::finish");
-    }
-    (void)m.optional(name);
-    MapReader params(value, "the effect " + name);
+    if (manifest == nullptr) throw LogicError("an effect passed MapReader but is not registered: " + name);
+    (void)m.required(name);  // reports an effect with no value
+    std::vector<std::string> keys{"enabled"};
+    for (const EffectParam& p : manifest->params) keys.emplace_back(p.key);
+    MapReader params(value, "the effect " + name, keys);
     EffectSpec effect;
     effect.name = name;
     effect.loc = value.loc();
@@ -133,29 +129,28 @@ std::vector<EffectSpec> read_effects(const Node& node) {
       effect.param[i] = p.zero_allowed ? require_non_negative(v, x) : require_positive(v, x);
     }
     if (std::optional<Node> enabled = params.optional("enabled")) effect.enabled = read_bool(*enabled);
-    params.finish();
     effects.push_back(effect);
   }
-  m.finish();
   return effects;
 }
 
 PartSpec read_part(const Node& node) {
-  MapReader m(node, "a part");
+  MapReader m(node, "a part", {"name", "arm", "shape", "position", "rotation"});
   PartSpec part;
   part.loc = node.loc();
   part.name = read_name(m.required("name"));
   part.arm = read_choice(m.required("arm"), {"fixed", "moving"}) == "fixed" ? Arm::fixed : Arm::moving;
   part.shape = read_shape(m.required("shape"));
   part.pose = read_pose(m);
-  m.finish();
   return part;
 }
 
 }  // namespace
 
 ObjectSpec read_object(const Node& root) {
-  MapReader m(root, "an object file");
+  MapReader m(root, "an object file",
+              {"object", "description", "mass", "centre_of_gravity", "functional_pose", "symmetry_plane",
+               "lever", "spring", "emphasis", "application", "parts", "effects"});
   ObjectSpec o;
   o.loc = root.loc();
   o.file = root.loc().file;
@@ -165,15 +160,13 @@ ObjectSpec read_object(const Node& root) {
   o.mass = require_positive(mass, read_quantity(mass, dim::mass));
   o.centre_of_gravity = read_vector(m.required("centre_of_gravity"), dim::length);
   {
-    MapReader pose(m.required("functional_pose"), "the functional pose");
+    MapReader pose(m.required("functional_pose"), "the functional pose", {"position", "rotation"});
     o.functional_pose = read_pose(pose);
-    pose.finish();
   }
   {
-    MapReader plane(m.required("symmetry_plane"), "the symmetry plane");
+    MapReader plane(m.required("symmetry_plane"), "the symmetry plane", {"point", "normal"});
     o.symmetry_plane.point = read_vector(plane.required("point"), dim::length);
     o.symmetry_plane.normal = read_direction(plane.required("normal"));
-    plane.finish();
   }
   const Node lever = m.required("lever");
   o.lever = read_lever(lever);
@@ -198,7 +191,6 @@ ObjectSpec read_object(const Node& root) {
   }
   if (!has_arm[0] || !has_arm[1]) parts.fail("parts on both arms, fixed and moving");
   if (std::optional<Node> effects = m.optional("effects")) o.effects = read_effects(*effects);
-  m.finish();
   return o;
 }
 

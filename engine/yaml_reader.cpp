@@ -73,7 +73,8 @@ Node load_yaml_file(const std::string& path) {
 
 Node load_yaml_string(const std::string& text, const std::string& name) { return parse(text, name); }
 
-MapReader::MapReader(const Node& node, std::string what) : node_(node), what_(std::move(what)) {
+MapReader::MapReader(const Node& node, std::string what, std::vector<std::string> keys)
+    : node_(node), what_(std::move(what)), keys_(std::move(keys)) {
   if (!node.is_map()) node.fail("a mapping for " + what_);
   std::vector<std::string> seen;
   for (auto it = node.yaml().begin(); it != node.yaml().end(); ++it) {
@@ -84,6 +85,13 @@ MapReader::MapReader(const Node& node, std::string what) : node_(node), what_(st
       if (s == name) key.fail("each key once in " + what_, "'" + name + "' again");
     }
     seen.push_back(name);
+    bool known = false;
+    for (const std::string& k : keys_) known = known || k == name;
+    if (!known) {
+      std::string expected = "one of the keys of " + what_ + " (";
+      for (size_t i = 0; i < keys_.size(); ++i) expected += (i ? ", " : "") + keys_[i];
+      key.fail(expected + ")", "'" + name + "'" + did_you_mean(name, keys_));
+    }
   }
 }
 
@@ -94,7 +102,9 @@ Node MapReader::required(std::string_view key) {
 }
 
 std::optional<Node> MapReader::optional(std::string_view key) {
-  known_.emplace_back(key);
+  bool declared = false;
+  for (const std::string& k : keys_) declared = declared || k == key;
+  if (!declared) throw LogicError("MapReader for " + what_ + " asked for undeclared key " + std::string(key));
   for (auto it = node_.yaml().begin(); it != node_.yaml().end(); ++it) {
     if (it->first.Scalar() == key) {
       // A key with no value ("spring:") reads as null: report it at the key.
@@ -120,20 +130,6 @@ std::vector<std::pair<std::string, Node>> MapReader::entries() const {
     out.emplace_back(it->first.Scalar(), node_.child(it->second));
   }
   return out;
-}
-
-void MapReader::finish() {
-  for (auto it = node_.yaml().begin(); it != node_.yaml().end(); ++it) {
-    const std::string& name = it->first.Scalar();
-    bool known = false;
-    for (const std::string& k : known_) known = known || k == name;
-    if (!known) {
-      std::string expected = "one of the keys of " + what_ + " (";
-      for (size_t i = 0; i < known_.size(); ++i) expected += (i ? ", " : "") + known_[i];
-      expected += ")";
-      node_.child(it->first).fail(expected, "'" + name + "'" + did_you_mean(name, known_));
-    }
-  }
 }
 
 std::string read_string(const Node& node) {

@@ -45,11 +45,13 @@ class Node {
 Node load_yaml_file(const std::string& path);
 Node load_yaml_string(const std::string& text, const std::string& name);
 
-// Reads the keys of one mapping. Every key read through it becomes known;
-// finish() rejects the keys nobody asked for, with "did you mean".
+// Reads the keys of one mapping against its schema: the keys it may have
+// are declared up front, so a key that is not one of them is reported first,
+// with "did you mean", before any key counts as missing.
 class MapReader {
  public:
-  MapReader(const Node& node, std::string what);  // what: "the lever", ...
+  // what: "the lever", ...; keys: every key the mapping may have.
+  MapReader(const Node& node, std::string what, std::vector<std::string> keys);
   ~MapReader() = default;
   MapReader(const MapReader&) = delete;
   MapReader& operator=(const MapReader&) = delete;
@@ -58,14 +60,13 @@ class MapReader {
   std::optional<Node> optional(std::string_view key);
   bool has(std::string_view key) const;
   const Node& node() const { return node_; }
-  // Every key of the map, in file order (for maps keyed by user names).
+  // Every key of the map, in file order.
   std::vector<std::pair<std::string, Node>> entries() const;
-  void finish();
 
  private:
   Node node_;
   std::string what_;
-  std::vector<std::string> known_;
+  std::vector<std::string> keys_;
 };
 
 // Typed scalar reads. Each fails with file:line:col on a wrong type.

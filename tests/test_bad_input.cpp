@@ -204,11 +204,19 @@ TEST(BadInputBase, HandIsValid) {
 
 // ---------------------------------------------------------------- unknown keys
 
-// A misspelt required key is reported as missing, at its mapping: the reader
-// asks for 'constant' before it can know that 'constnat' is unknown.
-TEST(BadInputObject, MisspeltRequiredKeyIsMissing) {
+// A misspelt required key is reported where it is written, with the key it
+// is closest to: unknown keys are found before any key counts as missing.
+TEST(BadInputObject, MisspeltRequiredKeySaysDidYouMean) {
   const std::string e =
       object_error(replace_once(kNutcracker, "  constant: 600 N/m", "  constnat: 600 N/m"));
+  EXPECT_THAT(e, HasSubstr("bad.yaml:18:3:"));
+  EXPECT_THAT(e, HasSubstr("expected one of the keys of the spring (constant, position, rest_length, preload), "
+                           "found 'constnat' (did you mean 'constant'?)"));
+}
+
+// A key simply left out is missing, reported at its mapping.
+TEST(BadInputObject, MissingRequiredKey) {
+  const std::string e = object_error(replace_once(kNutcracker, "  constant: 600 N/m\n", ""));
   EXPECT_THAT(e, HasSubstr("bad.yaml:18:3:"));
   EXPECT_THAT(e, HasSubstr("expected key 'constant' in the spring, found no such key"));
 }
@@ -248,14 +256,14 @@ TEST(BadInputObject, UnknownEffectParameter) {
   const std::string e =
       object_error(replace_once(kNutcracker, "0.0005 N*m*s/rad, enabled:", "0.0005 N*m*s/rad, enable:"));
   EXPECT_THAT(e, HasSubstr("bad.yaml:34:52:"));
-  EXPECT_THAT(e, HasSubstr("expected one of the keys of the effect viscous_damping (coefficient, enabled)"));
+  EXPECT_THAT(e, HasSubstr("expected one of the keys of the effect viscous_damping (enabled, coefficient)"));
   EXPECT_THAT(e, HasSubstr("found 'enable' (did you mean 'enabled'?)"));
 }
 
-TEST(BadInputActee, MisspeltKeyIsMissing) {
+TEST(BadInputActee, MisspeltKeySaysDidYouMean) {
   const std::string e = actee_error(replace_once(kWalnut, "stiffness: 250", "stifness: 250"));
-  EXPECT_THAT(e, HasSubstr("bad.yaml:1:1:"));
-  EXPECT_THAT(e, HasSubstr("expected key 'stiffness' in an actee file, found no such key"));
+  EXPECT_THAT(e, HasSubstr("bad.yaml:7:1:"));
+  EXPECT_THAT(e, HasSubstr("found 'stifness' (did you mean 'stiffness'?)"));
 }
 
 TEST(BadInputActee, UnknownKeySaysDidYouMean) {
@@ -271,10 +279,11 @@ TEST(BadInputActee, ExtraKey) {
                            "mass, force_direction, limit, stiffness, breaks), found 'colour'"));
 }
 
-TEST(BadInputAgent, MisspeltFingerIsMissing) {
+TEST(BadInputAgent, MisspeltFingerSaysDidYouMean) {
   const std::string e = agent_error(replace_once(kHand, "  middle:", "  midle:"));
-  EXPECT_THAT(e, HasSubstr("bad.yaml:6:3:"));
-  EXPECT_THAT(e, HasSubstr("expected key 'middle' in the fingers, found no such key"));
+  EXPECT_THAT(e, HasSubstr("bad.yaml:16:3:"));
+  EXPECT_THAT(e, HasSubstr("expected one of the keys of the fingers (thumb, index, middle, ring, little), "
+                           "found 'midle' (did you mean 'middle'?)"));
 }
 
 TEST(BadInputAgent, SixthFinger) {
@@ -355,8 +364,11 @@ TEST(BadInputObject, ScalarWhereMappingExpected) {
 }
 
 TEST(BadInputObject, PartsNotASequence) {
-  const std::string e = object_error(replace_once(
-      kNutcracker, "parts:\n  - name: fixed_arm", "parts: fixed_arm\nother:\n  - name: fixed_arm"));
+  const size_t parts = kNutcracker.find("parts:");
+  const size_t effects = kNutcracker.find("effects:");
+  ASSERT_LT(parts, effects);
+  const std::string e =
+      object_error(kNutcracker.substr(0, parts) + "parts: fixed_arm\n" + kNutcracker.substr(effects));
   EXPECT_THAT(e, HasSubstr("bad.yaml:23:8:"));
   EXPECT_THAT(e, HasSubstr("expected a sequence of parts, found 'fixed_arm'"));
 }
@@ -1023,7 +1035,8 @@ TEST(BadInputFile, SequenceAtTheTop) {
 TEST(BadInputFile, ReadObjectOnAnActee) {
   const std::string e = object_error(kWalnut);
   EXPECT_THAT(e, HasSubstr("bad.yaml:1:1:"));
-  EXPECT_THAT(e, HasSubstr("expected key 'object' in an object file, found no such key"));
+  EXPECT_THAT(e, HasSubstr("expected one of the keys of an object file (object, "));
+  EXPECT_THAT(e, HasSubstr("found 'actee'"));
 }
 
 TEST(BadInputFile, ValidateReportsKindAndName) {
