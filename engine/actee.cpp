@@ -23,7 +23,9 @@ void update_actee(const Model& m, State& s) {
   }
   s.condition = s.actee_force > 0 ? ActeeCondition::squeezed : ActeeCondition::intact;
   // Held: gripped between the jaws with some force; it then moves with them.
-  s.held = s.blocked && s.actee_force > 0;
+  const bool held = s.blocked && s.actee_force > 0;
+  if (held && !s.held) s.actee_anchor = s.actee_pose.translation();  // picked up
+  s.held = held;
 }
 
 }  // namespace afford

@@ -73,8 +73,9 @@ void agent_actee(const Model& m, State& s) {
 
 void find_contacts(const Model& m, State& s) {
   agent_object(m, s);
-  // A broken actee is fragments: nothing left to touch or grip.
-  if (!m.has_actee || s.condition == ActeeCondition::broken) {
+  // A broken actee is fragments: nothing left to touch or grip (from the
+  // frame after the break: on that frame the jaws still touched it).
+  if (!m.has_actee || (s.condition == ActeeCondition::broken && s.broke_at < s.t)) {
     s.object_actee.clear();
     s.agent_actee.clear();
     return;

@@ -31,12 +31,14 @@ int edit_distance(std::string_view a, std::string_view b) {
 
 std::string closest_name(std::string_view wrong,
                          const std::vector<std::string>& candidates) {
-  // Allow about one typo per four letters, at least one.
+  // Allow about one typo per four letters, at least one; a name cut short
+  // ("grasp" for "grasping") counts as one typo.
   const int allowed = std::max(1, static_cast<int>(wrong.size()) / 4);
   std::string best;
   int best_distance = allowed + 1;
   for (const std::string& c : candidates) {
-    const int dist = edit_distance(wrong, c);
+    const bool cut_short = wrong.size() >= 3 && c.size() > wrong.size() && c.compare(0, wrong.size(), wrong) == 0;
+    const int dist = cut_short ? 1 : edit_distance(wrong, c);
     if (dist < best_distance) {
       best_distance = dist;
       best = c;

@@ -15,6 +15,7 @@ void update_grasp(const Model&, State& s) {
     s.hand_to_object = s.hand.inverse() * s.object_pose;
     s.thumb_in_object = s.object_pose.inverse() * s.fingertip[0];
     s.theta_command = s.theta;
+    s.object_anchor = s.object_pose.translation();
   }
   s.grasped = grasp;
 }

@@ -28,6 +28,9 @@ void refresh_contact_angle(const Model& m, State& s) {
 }  // namespace
 
 void place_bodies(const Model& m, State& s, const Sample& sample) {
+  const Eigen::Vector3d hand_before = s.hand.translation();
+  const Eigen::Vector3d object_before = s.object_pose.translation();
+  const Eigen::Vector3d actee_before = s.actee_pose.translation();
   s.t = sample.t;
   s.hand = sample.hand;
   s.fingertip = sample.fingertip;
@@ -40,6 +43,11 @@ void place_bodies(const Model& m, State& s, const Sample& sample) {
   } else {
     refresh_contact_angle(m, s);
   }
+  // Speeds over the frame (the first frame starts from rest).
+  const double dt = m.timestep;
+  s.hand_speed = s.frame > 0 ? (s.hand.translation() - hand_before).norm() / dt : 0.0;
+  s.object_speed = (s.object_pose.translation() - object_before).norm() / dt;
+  s.actee_speed = (s.actee_pose.translation() - actee_before).norm() / dt;
 }
 
 }  // namespace afford

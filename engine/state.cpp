@@ -91,6 +91,9 @@ std::uint64_t state_hash(const State& s) {
   h.value(s.grasped);
   h.vec(s.thumb_in_object);
   h.vec(s.thumb_proxy);
+  h.vec(s.object_anchor);
+  h.vec(s.actee_anchor);
+  for (double x : {s.hand_speed, s.object_speed, s.actee_speed}) h.value(x);
   for (double x : {s.theta, s.omega, s.alpha, s.theta_command, s.effort_distance, s.load_distance,
                    s.thumb_speed, s.compression, s.effort_force, s.effort_excess, s.contact_angle,
                    s.actee_force, s.actee_load, s.actee_compression, s.peak_actee_load, s.broke_at}) {

@@ -66,6 +66,11 @@ struct State {
   Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();         // world, from the sample
   std::array<Eigen::Vector3d, kFingers> fingertip{};              // m, world
   std::array<std::array<double, kJoints>, kFingers> joint{};      // rad
+  double hand_speed = 0;    // m/s, of the hand's origin
+  double object_speed = 0;  // m/s, of the object frame's origin
+  double actee_speed = 0;   // m/s, of the actee's centre
+  Eigen::Vector3d object_anchor = Eigen::Vector3d::Zero();  // m, world: object origin when the grasp began
+  Eigen::Vector3d actee_anchor = Eigen::Vector3d::Zero();   // m, world: actee centre when last picked up
 
   // --- the grasp (from the last frame's agent-object contacts)
   bool grasped = false;  // thumb on the moving arm, another finger on the fixed arm

@@ -1,0 +1,280 @@
+// rules/functions.yaml -> RuleSet: every `when` parsed, type-checked with
+// units, and compiled into one flat program in which an expression written
+// several times (in one function or in several) has one slot.
+#include <cstring>
+#include <map>
+#include <tuple>
+
+#include "did_you_mean.h"
+#include "rules_impl.h"
+#include "yaml_reader.h"
+
+namespace afford {
+namespace {
+
+struct Type {
+  bool boolean = false;
+  Dimension dimension;
+};
+
+std::string describe_type(const Type& t) { return t.boolean ? "a condition" : describe_dimension(t.dimension); }
+
+class Compiler {
+ public:
+  explicit Compiler(RuleSet& rules) : rules_(rules) {}
+
+  // Compiles one node's tree; returns the slot of its root.
+  int compile(RuleNode& node) {
+    const size_t n = node.tree.nodes.size();
+    node.tree_slot.assign(n, -1);
+    node.tree_dimension.assign(n, dim::none);
+    node.tree_boolean.assign(n, false);
+    const Type t = visit(node, node.tree.root);
+    if (!t.boolean) {
+      const ExprNode& root = node.tree.nodes[static_cast<size_t>(node.tree.root)];
+      fail(root.loc, "a condition (a comparison, or a signal that is true or false)",
+           "'" + root.text + "', " + describe_type(t));
+    }
+    return node.tree_slot[static_cast<size_t>(node.tree.root)];
+  }
+
+ private:
+  int emit(const Instr& in) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &in.k, sizeof bits);
+    const auto key = std::make_tuple(static_cast<int>(in.op), in.a, in.b, bits, in.signal);
+    auto it = seen_.find(key);
+    if (it != seen_.end()) return it->second;  // shared: evaluated once per frame
+    rules_.program.push_back(in);
+    const int slot = static_cast<int>(rules_.program.size()) - 1;
+    seen_.emplace(key, slot);
+    return slot;
+  }
+
+  Type visit(RuleNode& node, int index) {
+    const ExprNode& e = node.tree.nodes[static_cast<size_t>(index)];
+    Type t;
+    int slot = -1;
+    switch (e.kind) {
+      case ExprKind::number:
+        t.dimension = e.dimension;
+        slot = emit({Op::constant, -1, -1, e.value, nullptr});
+        break;
+      case ExprKind::boolean:
+        t.boolean = true;
+        slot = emit({Op::constant, -1, -1, e.value, nullptr});
+        break;
+      case ExprKind::call: {
+        const Signal* s = resolve(e);
+        t.boolean = s->boolean;
+        t.dimension = s->dimension;
+        slot = emit({Op::signal, -1, -1, 0, s});
+        break;
+      }
+      case ExprKind::unary: {
+        const Type inner = visit(node, e.children[0]);
+        const int a = node.tree_slot[static_cast<size_t>(e.children[0])];
+        if (e.op == "not") {
+          if (!inner.boolean) operand_error(node, e.children[0], "a condition after 'not'");
+          t.boolean = true;
+          slot = emit({Op::logical_not, a, -1, 0, nullptr});
+        } else {
+          if (inner.boolean) operand_error(node, e.children[0], "a number after '-'");
+          t = inner;
+          slot = emit({Op::neg, a, -1, 0, nullptr});
+        }
+        break;
+      }
+      case ExprKind::binary:
+        std::tie(t, slot) = binary(node, e);
+        break;
+    }
+    node.tree_slot[static_cast<size_t>(index)] = slot;
+    node.tree_dimension[static_cast<size_t>(index)] = t.dimension;
+    node.tree_boolean[static_cast<size_t>(index)] = t.boolean;
+    return t;
+  }
+
+  std::pair<Type, int> binary(RuleNode& node, const ExprNode& e) {
+    const Type l = visit(node, e.children[0]);
+    const Type r = visit(node, e.children[1]);
+    const int a = node.tree_slot[static_cast<size_t>(e.children[0])];
+    const int b = node.tree_slot[static_cast<size_t>(e.children[1])];
+    const std::string& op = e.op;
+    Type t;
+    if (op == "and" || op == "or") {
+      if (!l.boolean) operand_error(node, e.children[0], "a condition before '" + op + "'");
+      if (!r.boolean) operand_error(node, e.children[1], "a condition after '" + op + "'");
+      t.boolean = true;
+      return {t, emit({op == "and" ? Op::logical_and : Op::logical_or, a, b, 0, nullptr})};
+    }
+    if (l.boolean) operand_error(node, e.children[0], "a number before '" + op + "'");
+    if (r.boolean) operand_error(node, e.children[1], "a number after '" + op + "'");
+    static const std::map<std::string, Op> kOps = {
+        {"+", Op::add}, {"-", Op::sub}, {"*", Op::mul}, {"/", Op::div}, {"<", Op::lt}, {"<=", Op::le},
+        {">", Op::gt},  {">=", Op::ge}, {"==", Op::eq}, {"!=", Op::ne}};
+    const Op code = kOps.at(op);
+    if (code == Op::mul || code == Op::div) {
+      t.dimension = code == Op::mul ? l.dimension * r.dimension : l.dimension / r.dimension;
+    } else {
+      // Sums and comparisons need the same dimension on both sides.
+      if (!(l.dimension == r.dimension)) {
+        const ExprNode& rhs = node.tree.nodes[static_cast<size_t>(e.children[1])];
+        const ExprNode& lhs = node.tree.nodes[static_cast<size_t>(e.children[0])];
+        fail(rhs.loc, describe_type(l) + " to go with '" + lhs.text + "'",
+             "'" + rhs.text + "', " + describe_type(r));
+      }
+      t.dimension = l.dimension;
+      t.boolean = code != Op::add && code != Op::sub;
+      if (t.boolean) t.dimension = dim::none;
+    }
+    return {t, emit({code, a, b, 0, nullptr})};
+  }
+
+  [[noreturn]] void operand_error(const RuleNode& node, int index, const std::string& expected) {
+    const ExprNode& e = node.tree.nodes[static_cast<size_t>(index)];
+    fail(e.loc, expected, "'" + e.text + "'");
+  }
+
+  const Signal* resolve(const ExprNode& e) {
+    std::vector<Entity> args;
+    for (const std::string& a : e.args) {
+      Entity entity;
+      if (!parse_entity(a, &entity)) {
+        fail(e.loc, "arguments among agent, object and actee in '" + e.text + "'",
+             "'" + a + "'" + did_you_mean(a, {"agent", "object", "actee"}));
+      }
+      args.push_back(entity);
+    }
+    if (const Signal* s = find_signal(e.op, args)) return s;
+    std::string forms;
+    for (const Signal& s : signal_registry()) {
+      if (e.op == s.name) forms += (forms.empty() ? "" : ", ") + signature(s);
+    }
+    if (forms.empty()) {
+      const std::string hint = did_you_mean(e.op, signal_names());
+      fail(e.loc, "a signal of the vocabulary (afford rules --list)", "'" + e.op + "'" + hint);
+    }
+    fail(e.loc, "one of " + forms, "'" + e.text + "'");
+  }
+
+  RuleSet& rules_;
+  std::map<std::tuple<int, int, int, std::uint64_t, const Signal*>, int> seen_;
+};
+
+// Orders functions so that each comes after those it required; a cycle is
+// an error at the first function in it.
+void order_by_requirement(RuleSet& rules, const std::vector<std::vector<int>>& required) {
+  const size_t n = rules.functions.size();
+  std::vector<int> state(n, 0);  // 0 new, 1 visiting, 2 done
+  std::vector<int> order;
+  std::vector<int> mapping(n);
+  auto visit = [&](auto&& self, int f) -> void {
+    if (state[static_cast<size_t>(f)] == 2) return;
+    if (state[static_cast<size_t>(f)] == 1) {
+      const RuleFunction& fn = rules.functions[static_cast<size_t>(f)];
+      fail(fn.loc, "functions that do not require each other in a circle", "'" + fn.name + "' requiring itself");
+    }
+    state[static_cast<size_t>(f)] = 1;
+    for (int r : required[static_cast<size_t>(f)]) self(self, r);
+    state[static_cast<size_t>(f)] = 2;
+    order.push_back(f);
+  };
+  for (size_t f = 0; f < n; ++f) visit(visit, static_cast<int>(f));
+  std::vector<RuleFunction> sorted;
+  for (size_t i = 0; i < n; ++i) mapping[static_cast<size_t>(order[i])] = static_cast<int>(i);
+  for (int f : order) sorted.push_back(std::move(rules.functions[static_cast<size_t>(f)]));
+  for (RuleFunction& fn : sorted) {
+    for (RuleNode& node : fn.nodes) {
+      if (node.required >= 0) node.required = mapping[static_cast<size_t>(node.required)];
+    }
+  }
+  rules.functions = std::move(sorted);
+}
+
+std::shared_ptr<const RuleSet> compile_rules(const Node& root) {
+  auto rules = std::make_shared<RuleSet>();
+  rules->file = root.loc().file;
+  MapReader top(root, "a function-model file", {"functions"});
+  const Node list = top.required("functions");
+  if (!list.is_sequence() || list.size() == 0) list.fail("a sequence of function models");
+  Compiler compiler(*rules);
+
+  // Names first, so that `required` may name a function defined later.
+  std::vector<std::string> names;
+  for (size_t i = 0; i < list.size(); ++i) {
+    MapReader f(list[i], "a function model", {"name", "description", "requires", "nodes"});
+    const Node name = f.required("name");
+    const std::string n = read_name(name);
+    for (const std::string& other : names) {
+      if (other == n) name.fail("a function name used once", "'" + n + "' again");
+    }
+    names.push_back(n);
+  }
+  std::vector<std::vector<int>> required(list.size());
+  for (size_t i = 0; i < list.size(); ++i) {
+    MapReader f(list[i], "a function model", {"name", "description", "requires", "nodes"});
+    RuleFunction fn;
+    fn.loc = list[i].loc();
+    fn.name = names[i];
+    fn.description = read_string(f.required("description"));
+    if (std::optional<Node> req = f.optional("requires")) {
+      if (!req->is_sequence()) req->fail("a sequence of function names, e.g. [hold]");
+      for (size_t j = 0; j < req->size(); ++j) {
+        const std::string r = read_name((*req)[j]);
+        int index = -1;
+        for (size_t k = 0; k < names.size(); ++k) {
+          if (names[k] == r) index = static_cast<int>(k);
+        }
+        if (index < 0) (*req)[j].fail("the name of a function in this file", "'" + r + "'" + did_you_mean(r, names));
+        if (index == static_cast<int>(i)) (*req)[j].fail("another function", "'" + r + "', itself");
+        required[i].push_back(index);
+        RuleNode node;
+        node.text = r + " inferred";
+        node.loc = (*req)[j].loc();
+        node.required = index;
+        fn.nodes.push_back(std::move(node));
+      }
+    }
+    const Node nodes = f.required("nodes");
+    if (!nodes.is_sequence() || nodes.size() == 0) nodes.fail("a sequence of condition nodes");
+    for (size_t j = 0; j < nodes.size(); ++j) {
+      MapReader nm(nodes[j], "a condition node", {"when", "for"});
+      const Node when = nm.required("when");
+      RuleNode node;
+      node.text = read_string(when);
+      node.loc = when.loc();
+      // yaml-cpp tags a quoted scalar "!": its text starts one column later.
+      node.tree = parse_expression(node.text, node.loc, when.yaml().Tag() == "!");
+      node.slot = compiler.compile(node);
+      if (std::optional<Node> d = nm.optional("for")) {
+        node.min_duration = require_non_negative(*d, read_quantity(*d, dim::time));
+      }
+      node.value_offset = fn.value_count;
+      fn.value_count += static_cast<int>(node.tree.nodes.size());
+      fn.nodes.push_back(std::move(node));
+    }
+    rules->functions.push_back(std::move(fn));
+  }
+  order_by_requirement(*rules, required);
+  return rules;
+}
+
+}  // namespace
+
+std::shared_ptr<const RuleSet> load_rules(const std::string& path) { return compile_rules(load_yaml_file(path)); }
+
+std::shared_ptr<const RuleSet> read_rules(const std::string& yaml_text, const std::string& name) {
+  return compile_rules(load_yaml_string(yaml_text, name));
+}
+
+std::vector<SignalDoc> vocabulary() {
+  std::vector<SignalDoc> docs;
+  for (const Signal& s : signal_registry()) {
+    std::string type = s.boolean ? "condition" : (s.dimension == dim::none ? "number" : describe_dimension(s.dimension));
+    docs.push_back({signature(s), type, s.doc});
+  }
+  return docs;
+}
+
+}  // namespace afford

@@ -1,0 +1,86 @@
+// Explanations: each node of an inference written out with the values that
+// made it true, e.g. "force(object, actee) = 312 N > limit(actee) = 300 N".
+#include <cstdio>
+
+#include "rules_impl.h"
+
+namespace afford {
+namespace {
+
+std::string format_value(double v, bool boolean, const Dimension& d) {
+  if (boolean) return v != 0 ? "true" : "false";
+  if (d == dim::none) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+  }
+  return format_quantity(v, d);
+}
+
+class Writer {
+ public:
+  Writer(const RuleNode& node, const double* values) : node_(node), values_(values) {}
+
+  std::string write(int index) const {
+    const ExprNode& e = node_.tree.nodes[static_cast<size_t>(index)];
+    if (e.kind == ExprKind::binary && (e.op == "and" || e.op == "or")) {
+      return write(e.children[0]) + " " + e.op + " " + write(e.children[1]);
+    }
+    if (e.kind == ExprKind::binary && is_comparison(e.op)) {
+      return operand(e.children[0]) + " " + e.op + " " + operand(e.children[1]);
+    }
+    if (e.kind == ExprKind::unary && e.op == "not") return "not (" + write(e.children[0]) + ")";
+    return operand(index);
+  }
+
+ private:
+  static bool is_comparison(const std::string& op) {
+    return op == "<" || op == "<=" || op == ">" || op == ">=" || op == "==" || op == "!=";
+  }
+
+  // A literal reads as written; anything else gets its value.
+  std::string operand(int index) const {
+    const ExprNode& e = node_.tree.nodes[static_cast<size_t>(index)];
+    if (e.kind == ExprKind::number || e.kind == ExprKind::boolean) return e.text;
+    const size_t i = static_cast<size_t>(index);
+    if (node_.tree_boolean[i] && values_[i] != 0) return e.text;  // a condition that held
+    return e.text + " = " + format_value(values_[i], node_.tree_boolean[i], node_.tree_dimension[i]);
+  }
+
+  const RuleNode& node_;
+  const double* values_;
+};
+
+std::string format_time(double t) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f s", t);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<Inference> inferences(const RuleSet& rules, const RuleState& rs) {
+  std::vector<Inference> out;
+  for (const RuleState::Record& r : rs.log) {
+    const RuleFunction& fn = rules.functions[static_cast<size_t>(r.function)];
+    Inference inf;
+    inf.function = fn.name;
+    inf.t = r.t;
+    for (size_t i = 0; i < fn.nodes.size(); ++i) {
+      const RuleNode& node = fn.nodes[i];
+      const double t = rs.log_times[r.times_at + i];
+      std::string text;
+      if (node.required >= 0) {
+        text = node.text;
+      } else {
+        text = Writer(node, rs.log_values.data() + r.values_at + node.value_offset).write(node.tree.root);
+      }
+      if (node.min_duration > 0) text += " (held for " + format_quantity(node.min_duration, dim::time) + ")";
+      inf.nodes.push_back({text + " at " + format_time(t), t});
+    }
+    out.push_back(std::move(inf));
+  }
+  return out;
+}
+
+}  // namespace afford
