@@ -7,6 +7,7 @@
 #include "alloc_counter.h"
 #include "load.h"
 #include "model.h"
+#include "rules.h"
 #include "state.h"
 
 namespace afford {
@@ -42,8 +43,11 @@ Sample grasp_sample(const Model& m, const State& s, double effort, double closin
   return sample;
 }
 
+// One frame: contacts, solver and the shipped function models.
 void BM_Frame(benchmark::State& bench, const char* tool, const char* actee) {
   const Scene scene = make_scene(tool, actee);
+  const auto rules = load_rules(kSource + "/rules/functions.yaml");
+  auto rule_state = make_rule_state(*rules);
   auto state = make_state(scene.model);
   Sample sample = grasp_sample(scene.model, *state, scene.effort, 0);
   step(scene.model, *state, sample);
@@ -54,13 +58,15 @@ void BM_Frame(benchmark::State& bench, const char* tool, const char* actee) {
     const double phase = static_cast<double>(frames % 2000) / 1000.0;
     const double closing = 0.03 * (phase < 1 ? phase : 2 - phase);
     sample = grasp_sample(scene.model, *state, scene.effort, closing);
-    sample.t += scene.model.timestep;
+    sample.t = static_cast<double>(frames + 2) * scene.model.timestep;
     step(scene.model, *state, sample);
+    evaluate(*rules, *rule_state, scene.model, *state);
     ++frames;
   }
   bench.counters["allocs_per_frame"] =
       static_cast<double>(allocation_count() - before) / static_cast<double>(std::max<std::int64_t>(frames, 1));
   bench.counters["grasped"] = state->grasped ? 1 : 0;
+  bench.counters["inferences"] = static_cast<double>(inferences(*rules, *rule_state).size());
 }
 
 BENCHMARK_CAPTURE(BM_Frame, nutcracker_walnut, "nutcracker", "walnut");

@@ -14,6 +14,10 @@ const std::vector<Command>& commands() {
       {"describe", "describe FILE [--actees DIR] | describe --effects",
        "what the model derives from a file: lever, advantage, interaction space, fits",
        run_describe},
+      {"rules", "rules --list | rules FILE", "the predicate vocabulary, or the function models of a file",
+       run_rules},
+      {"run", "run SESSION [--json] [--out DIR]",
+       "simulate a session: inferred functions and why, timeline and trace files", run_run},
   };
   return kCommands;
 }

@@ -17,8 +17,7 @@ void update_actee(const Model& m, State& s) {
     // Broken: the shell gives way and no longer holds the jaws apart.
     s.condition = ActeeCondition::broken;
     s.broke_at = s.t;
-    s.between_jaws = false;
-    s.held = false;
+    s.held = false;  // between_jaws stays for this frame's contacts; the next frame clears it
     return;
   }
   s.condition = s.actee_force > 0 ? ActeeCondition::squeezed : ActeeCondition::intact;

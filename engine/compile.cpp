@@ -121,6 +121,7 @@ Model compile(const ObjectSpec& object, const ActeeSpec* actee, const AgentSpec*
   compile_effects(object, m);                       // optional torque terms
   if (actee != nullptr) compile_actee(*actee, options, m);  // shape, limit, placement
   if (agent != nullptr) compile_agent(*agent, m);   // fingertips, joint ranges, f_a
+  compile_grasps(options.grasps, m);                // taxonomy: flat joint ranges
   return m;
 }
 

@@ -110,12 +110,13 @@ void solve_lever(const Model& m, State& s) {
     s.alpha = (s.omega - omega_before) / m.timestep;
     const double motion = motion_torques(m, s);
     double effort = motion / b + m.force_gain * excess;
-    // The hand cannot push harder than max_force: past that point more
+    // The hand cannot push harder than s.max_force (the agent's, capped by
+    // the grasp type's; stage 2): past that point more
     // travel of the tracked thumb adds no force, and the squeeze it would
     // have made is dropped. The command stays where the thumb is, so the
     // thumb has to come back that far before the force falls.
-    if (excess > 0 && effort > m.max_force) {
-      excess = std::max(0.0, (m.max_force - motion / b) / m.force_gain);
+    if (excess > 0 && effort > s.max_force) {
+      excess = std::max(0.0, (s.max_force - motion / b) / m.force_gain);
       if (s.blocked) {
         actee_force = std::min(actee_force, m.force_gain * excess * b / a);
         theta = s.contact_angle - actee_force / (m.actee_stiffness * a);

@@ -10,6 +10,7 @@
 
 #include "effects.h"
 #include "geometry.h"
+#include "grasps.h"
 #include "spec.h"
 
 namespace afford {
@@ -27,6 +28,10 @@ struct ModelOptions {
   double timestep = 1e-3;           // s, the haptic rate
   double contact_tolerance = 5e-4;  // m, closer than this counts as touching
   ActeePlacement actee;
+  // The grasp taxonomy (Fig. 7, rules/grasps.yaml), in file order. Empty
+  // means no taxonomy: the grasp is decided by contact alone, and the hand's
+  // force limit is the agent's max_force.
+  std::vector<GraspTypeSpec> grasps;
 };
 
 struct ModelPart {
@@ -83,6 +88,14 @@ struct Model {
   std::array<double, kFingers> tip_radius{};  // m
   std::vector<Geometry> fingertip;            // one sphere per finger
   std::array<std::array<double, kJoints>, kFingers> joint_min{}, joint_max{};  // rad
+
+  // grasp taxonomy (Fig. 7), per type in file order; empty: none (the grasp
+  // is decided by contact alone). See classify_grasp() in grasps.h.
+  std::vector<std::string> grasp_name;
+  std::vector<GraspKind> grasp_kind;
+  std::vector<double> grasp_max_force;  // N, the largest effort force in the type
+  std::vector<double> grasp_joint_min;  // rad, kFingers*kJoints per type, [type][finger][joint];
+  std::vector<double> grasp_joint_max;  // a free joint is [-inf, +inf]
 
   const Geometry& actee() const { return actee_geometry.front(); }
 };

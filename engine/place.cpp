@@ -20,6 +20,19 @@ void refresh_contact_angle(const Model& m, State& s) {
   s.placed_actee = s.actee_pose;
   const Eigen::Isometry3d rel = s.object_pose.inverse() * s.actee_pose;
   s.actee_in_object = rel;
+  // Far from every part, open or closed, it cannot be between the jaws: no
+  // bisection while the hand carries it about.
+  bool near = false;
+  for (const ModelPart& part : m.parts) {
+    for (double theta : {m.theta_min, m.theta_max}) {
+      near = near || !boxes_apart(part.geometry, part_in_object(part, theta), m.actee(), rel, m.contact_tolerance);
+    }
+  }
+  if (!near) {
+    s.between_jaws = false;
+    s.load_distance = 0;
+    return;
+  }
   s.between_jaws =
       find_contact_angle(m, rel, *s.query, &s.contact_angle, &s.jaw_contact) == JawFit::fits;
   s.load_distance = s.between_jaws ? rel.translation().x() : 0.0;
@@ -35,12 +48,15 @@ void place_bodies(const Model& m, State& s, const Sample& sample) {
   s.hand = sample.hand;
   s.fingertip = sample.fingertip;
   s.joint = sample.joint;
+  s.grasp_type = classify_grasp(m, s.joint);  // Fig. 7; -1 without a taxonomy
   // A grasped object moves with the hand (Sec. 4.3.1: fingers move, posture
-  // kept); a held actee moves with the object.
+  // kept); a held actee moves with the object; an actee in the hand (Sec.
+  // 4.3.3) but not in the jaws moves with the hand.
   if (s.grasped) s.object_pose = s.hand * s.hand_to_object;
   if (s.held) {
     s.actee_pose = s.object_pose * s.actee_in_object;
   } else {
+    if (s.actee_in_hand && s.condition != ActeeCondition::broken) s.actee_pose = s.hand * s.hand_to_actee;
     refresh_contact_angle(m, s);
   }
   // Speeds over the frame (the first frame starts from rest).

@@ -24,7 +24,13 @@ struct RuleState;  // per session
 std::shared_ptr<const RuleSet> load_rules(const std::string& path);
 std::shared_ptr<const RuleSet> read_rules(const std::string& yaml_text, const std::string& name);
 
-std::unique_ptr<RuleState> make_rule_state(const RuleSet& rules);
+// RuleState is opaque outside the engine; this deleter lets callers own one.
+struct RuleStateDeleter {
+  void operator()(RuleState* rs) const;
+};
+using RuleStatePtr = std::unique_ptr<RuleState, RuleStateDeleter>;
+
+RuleStatePtr make_rule_state(const RuleSet& rules);
 void reset(const RuleSet& rules, RuleState& rs);
 
 enum class EventKind : std::uint8_t {

@@ -271,7 +271,16 @@ std::shared_ptr<const RuleSet> read_rules(const std::string& yaml_text, const st
 std::vector<SignalDoc> vocabulary() {
   std::vector<SignalDoc> docs;
   for (const Signal& s : signal_registry()) {
-    std::string type = s.boolean ? "condition" : (s.dimension == dim::none ? "number" : describe_dimension(s.dimension));
+    std::string type = "condition";
+    if (!s.boolean && s.dimension == dim::none) type = "number";
+    if (!s.boolean && !(s.dimension == dim::none)) {
+      // "a force (e.g. '30 N')" -> "force [N]"
+      std::string name = describe_dimension(s.dimension);
+      name = name.substr(name.find(' ') + 1);
+      name = name.substr(0, name.find(" ("));
+      const std::string one = format_quantity(1.0, s.dimension);
+      type = name + " [" + one.substr(one.find(' ') + 1) + "]";
+    }
     docs.push_back({signature(s), type, s.doc});
   }
   return docs;

@@ -74,8 +74,10 @@ void record_inference(const RuleFunction& fn, RuleState& rs, int f, double t) {
 
 }  // namespace
 
-std::unique_ptr<RuleState> make_rule_state(const RuleSet& rules) {
-  auto rs = std::make_unique<RuleState>();
+void RuleStateDeleter::operator()(RuleState* rs) const { delete rs; }
+
+RuleStatePtr make_rule_state(const RuleSet& rules) {
+  RuleStatePtr rs(new RuleState);
   reset(rules, *rs);
   return rs;
 }

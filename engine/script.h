@@ -23,7 +23,11 @@
 //                                direction past the rest angle
 //   fingertips: {thumb: [x, y, z], index: ..., middle: ..., ring: ...,
 //                little: ...}    every fingertip centre in the hand frame
-//   posture: power_grasp         a grasp type of the grasp taxonomy
+//   posture: medium_wrap         a grasp type of the model's grasp taxonomy
+//                                (rules/grasps.yaml): every joint at the
+//                                middle of the type's range and the agent's;
+//                                a joint the type leaves free at the middle of
+//                                the agent's range
 //   posture: {thumb: [distal, proximal, metacarpal], index: ..., ...}
 //                                every joint angle (Fig. 8), within the
 //                                agent's ranges
@@ -60,7 +64,13 @@
 //
 // Between keyframes the sample interpolates linearly: the hand's position
 // and (by slerp) its rotation, each fingertip in the hand frame, each joint
-// angle.
+// angle. One exception: while a grip's squeeze changes (same tool pose in
+// the hand, same thumb distance), the thumb's angle about the pivot is
+// interpolated, so the thumb moves on the arc the arm's face sweeps.
+//
+// The grasp starts when the fingertips come within the contact tolerance
+// of the arms, so the last fraction of a millimetre of a closing approach
+// already counts as squeeze (effort_pos in the trace runs that much ahead).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -82,12 +92,6 @@ inline constexpr double kGripPress = 1e-4;  // m
 extern const std::array<Eigen::Vector3d, kFingers> kCurledFingertip;
 
 using JointAngles = std::array<std::array<double, kJoints>, kFingers>;  // rad, [finger][joint]
-
-// A posture by name, from the grasp taxonomy.
-struct NamedPosture {
-  std::string name;
-  JointAngles joint{};  // rad
-};
 
 // ------------------------------------------------------------ spec
 
@@ -135,7 +139,21 @@ struct Keyframe {
   Eigen::Quaterniond hand_rotation = Eigen::Quaterniond::Identity();  // world from hand, unit
   std::array<Eigen::Vector3d, kFingers> fingertip{};             // m, hand frame
   JointAngles joint{};                                           // rad
+
+  // When the fingers come from a grip: the thumb is the point thumb_rest
+  // of the moving arm's frame turned to thumb_angle, in the tool placed at
+  // object_in_hand. Between two grip keyframes with the same tool pose and
+  // the same thumb point the thumb turns about the pivot (thumb_angle is
+  // interpolated) instead of cutting the chord, so that a long squeeze keeps
+  // it on the arm's face.
+  bool grip = false;
+  Eigen::Isometry3d object_in_hand = Eigen::Isometry3d::Identity();  // the tool in the hand frame
+  Eigen::Vector3d thumb_rest = Eigen::Vector3d::Zero();  // m, moving arm frame
+  double thumb_angle = 0;                                // rad, about the pivot (+z)
 };
+
+// The thumb of a grip keyframe in the hand frame: object_in_hand * Rz(angle) * thumb_rest.
+Eigen::Vector3d grip_thumb(const Keyframe& k, double angle_rad);
 
 struct Script {
   std::vector<Keyframe> keyframes;  // t strictly increasing, at least one
@@ -143,18 +161,27 @@ struct Script {
 };
 
 // Resolves grips against the model (which must have its agent) and
-// posture names against `postures`. Throws DataError: a grip distance off
-// its arm, an unknown posture name (with "did you mean"), a joint angle
-// outside the agent's range.
-Script compile_script(const ScriptSpec& spec, const Model& model, const std::vector<NamedPosture>& postures);
+// posture names against the model's grasp taxonomy. Throws DataError: a
+// grip distance off its arm, an unknown posture name (with "did you
+// mean"), a joint angle outside the agent's range.
+Script compile_script(const ScriptSpec& spec, const Model& model);
+
+// The posture that stands for grasp type `type` of the model's taxonomy:
+// each joint the type constrains at the middle of the type's range within
+// the agent's, each free joint at the middle of the agent's range. False
+// when a range of the type lies outside the agent's (`why` says which).
+bool grasp_posture(const Model& model, int type, JointAngles* out, std::string* why);
 
 // The outer face of an arm at signed distance r along it: the y of the
 // face in the arm's frame and the z of the middle of the part there.
 // False when no part of that arm covers r.
 bool arm_outer_face(const Model& model, Arm arm, double r, double* face_y, double* mid_z);
 
-// Where a grip puts the thumb and the index in the object frame (the
-// index only if the grip has one). Throws DataError at the grip's values.
-void grip_points(const Model& model, const GripSpec& grip, Eigen::Vector3d* thumb, Eigen::Vector3d* index);
+// Where a grip puts the thumb and the index: the thumb's point on the
+// moving arm at rest (moving arm frame) and the angle it is turned to, the
+// index in the object frame (only if the grip has one). Throws DataError at
+// the grip's values.
+void grip_points(const Model& model, const GripSpec& grip, Eigen::Vector3d* thumb_rest, double* thumb_angle,
+                 Eigen::Vector3d* index);
 
 }  // namespace afford

@@ -32,6 +32,7 @@ void reset(const Model& m, State& s) {
   s.query = query ? std::move(query) : std::make_unique<ContactQuery>();
   s.object_pose = m.object_start;
   s.theta = s.theta_command = m.theta_rest;
+  s.max_force = m.max_force;
   if (m.has_actee) {
     s.actee_pose = m.actee_start;
     s.actee_start_position = m.actee_start.translation();
@@ -89,6 +90,9 @@ std::uint64_t state_hash(const State& s) {
   h.contacts(s.agent_object);
   h.value(s.finger_on_arm);
   h.value(s.grasped);
+  h.value(s.grasp_type);
+  h.value(s.actee_in_hand);
+  h.pose(s.hand_to_actee);
   h.vec(s.thumb_in_object);
   h.vec(s.thumb_proxy);
   h.vec(s.object_anchor);
@@ -96,7 +100,8 @@ std::uint64_t state_hash(const State& s) {
   for (double x : {s.hand_speed, s.object_speed, s.actee_speed}) h.value(x);
   for (double x : {s.theta, s.omega, s.alpha, s.theta_command, s.effort_distance, s.load_distance,
                    s.thumb_speed, s.compression, s.effort_force, s.effort_excess, s.contact_angle,
-                   s.actee_force, s.actee_load, s.actee_compression, s.peak_actee_load, s.broke_at}) {
+                   s.actee_force, s.actee_load, s.actee_compression, s.peak_actee_load, s.broke_at,
+                   s.max_force}) {
     h.value(x);
   }
   h.value(s.torque);

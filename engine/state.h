@@ -66,16 +66,20 @@ struct State {
   Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();         // world, from the sample
   std::array<Eigen::Vector3d, kFingers> fingertip{};              // m, world
   std::array<std::array<double, kJoints>, kFingers> joint{};      // rad
+  int grasp_type = -1;  // the posture's type in the model's taxonomy this frame; -1: none
   double hand_speed = 0;    // m/s, of the hand's origin
   double object_speed = 0;  // m/s, of the object frame's origin
   double actee_speed = 0;   // m/s, of the actee's centre
   Eigen::Vector3d object_anchor = Eigen::Vector3d::Zero();  // m, world: object origin when the grasp began
   Eigen::Vector3d actee_anchor = Eigen::Vector3d::Zero();   // m, world: actee centre when last picked up
 
-  // --- the grasp (from the last frame's agent-object contacts)
-  bool grasped = false;  // thumb on the moving arm, another finger on the fixed arm
+  // --- the grasp (from the last frame's agent-object and agent-actee contacts)
+  bool grasped = false;  // thumb on the moving arm, another finger on the fixed arm (and a taxonomy posture)
   Eigen::Isometry3d hand_to_object = Eigen::Isometry3d::Identity();  // object in hand frame while grasped
   Eigen::Vector3d thumb_in_object = Eigen::Vector3d::Zero();  // m, last thumb position, object frame
+  double max_force = 0;  // N, the largest effort force now: the agent's, capped by the grasp type's
+  bool actee_in_hand = false;  // the agent grasps the actee (Sec. 4.3.3): it moves with the hand
+  Eigen::Isometry3d hand_to_actee = Eigen::Isometry3d::Identity();  // actee in hand frame while in hand
 
   // --- lever-spring solver
   double theta = 0;          // rad, opening angle

@@ -1,12 +1,14 @@
 #include "validate.h"
 
 #include "did_you_mean.h"
+#include "grasps.h"
 #include "load.h"
 #include "model.h"
+#include "rules.h"
 
 namespace afford {
 
-std::vector<std::string> file_kinds() { return {"object", "actee", "agent"}; }
+std::vector<std::string> file_kinds() { return {"object", "actee", "agent", "functions", "grasps"}; }
 
 std::string validate_file(const std::string& path) {
   const Node root = load_yaml_file(path);
@@ -22,6 +24,11 @@ std::string validate_file(const std::string& path) {
     return "actee " + a.name;
   }
   if (kind == "agent") return "agent " + read_agent(root).name;
+  if (kind == "functions") {
+    const auto rules = load_rules(path);
+    return "function models, " + std::to_string(function_count(*rules)) + " functions";
+  }
+  if (kind == "grasps") return "grasp taxonomy, " + std::to_string(read_grasps(root).size()) + " types";
   const std::vector<std::string> kinds = file_kinds();
   std::string expected = "a file whose first key names its kind (";
   for (size_t i = 0; i < kinds.size(); ++i) expected += (i ? ", " : "") + kinds[i];

@@ -174,7 +174,7 @@ class Tracing : public ::testing::Test {
   std::unique_ptr<Model> model_;
   std::unique_ptr<State> state_;
   std::shared_ptr<const RuleSet> rules_;
-  std::unique_ptr<RuleState> rule_state_;
+  RuleStatePtr rule_state_;
 };
 
 const char* kTwoNodes =

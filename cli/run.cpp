@@ -1,0 +1,109 @@
+// afford run SESSION [--json] [--out DIR]: simulates a session file, prints
+// each inferred function with its time and explanation, and writes the
+// timeline (DIR/timeline.jsonl) and the trace (DIR/trace.csv); DIR defaults
+// to out/<session name>.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "commands.h"
+#include "run.h"
+#include "scripted_agent.h"
+#include "session.h"
+#include "trace.h"
+
+namespace afford::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+// An output file, closed when it goes out of scope.
+struct OutFile {
+  explicit OutFile(const fs::path& path) : file(std::fopen(path.c_str(), "w")) {
+    if (file == nullptr) throw std::runtime_error("cannot write " + path.string());
+  }
+  ~OutFile() { std::fclose(file); }
+  OutFile(const OutFile&) = delete;
+  OutFile& operator=(const OutFile&) = delete;
+  std::FILE* file;
+};
+
+void print_text(const CompiledSession& s, const RunResult& r, const fs::path& out) {
+  std::cout << "session " << s.name << ": " << s.description << "\n";
+  std::cout << r.frames << " frames of " << format_quantity(s.model.timestep, dim::time) << " to "
+            << number(r.end_time) << " s\n";
+  if (r.inferences.empty()) std::cout << "no function inferred\n";
+  for (const Inference& inf : r.inferences) {
+    std::printf("%s at %.3f s\n", inf.function.c_str(), inf.t);
+    for (const NodeExplanation& n : inf.nodes) std::printf("  %8.3f s  %s\n", n.t, n.text.c_str());
+  }
+  std::cout << "wrote " << (out / "timeline.jsonl").string() << " and " << (out / "trace.csv").string() << "\n";
+}
+
+void print_json(const CompiledSession& s, const RunResult& r) {
+  std::string j = "{\"session\":" + json_string(s.name) + ",\"functions\":[";
+  for (size_t i = 0; i < r.inferences.size(); ++i) {
+    const Inference& inf = r.inferences[i];
+    j += (i ? ",{" : "{") + std::string("\"name\":") + json_string(inf.function) + ",\"t\":" + number(inf.t) +
+         ",\"explanation\":[";
+    for (size_t n = 0; n < inf.nodes.size(); ++n) {
+      j += (n ? ",{" : "{") + std::string("\"t\":") + number(inf.nodes[n].t) +
+           ",\"text\":" + json_string(inf.nodes[n].text) + "}";
+    }
+    j += "]}";
+  }
+  j += "],\"frames\":" + std::to_string(r.frames) + "}";
+  std::cout << j << "\n";
+}
+
+}  // namespace
+
+int run_run(const Args& args) {
+  std::string file, out_dir;
+  bool json = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--json") {
+      json = true;
+    } else if (args[i] == "--out") {
+      if (i + 1 >= args.size()) return usage_error("--out needs a DIR");
+      out_dir = args[++i];
+    } else if (!args[i].empty() && args[i][0] == '-') {
+      return usage_error("run: unknown option '" + args[i] + "'");
+    } else if (file.empty()) {
+      file = args[i];
+    } else {
+      return usage_error("run takes one SESSION file");
+    }
+  }
+  if (file.empty()) return usage_error("run needs a SESSION file");
+  const CompiledSession session = load_session(file);  // DataError: file:line:col, exit 1
+  const fs::path out = out_dir.empty() ? fs::path("out") / session.name : fs::path(out_dir);
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw std::runtime_error("cannot create " + out.string() + ": " + ec.message());
+
+  RunResult result;
+  {
+    OutFile timeline(out / "timeline.jsonl");
+    OutFile trace(out / "trace.csv");
+    TimelineWriter timeline_writer(timeline.file);
+    TraceWriter trace_writer(trace.file);
+    Observer* const observers[] = {&timeline_writer, &trace_writer};
+    ScriptedAgent agent(session.script);
+    result = run_session(session.model, *session.rules, agent, observers);
+  }
+  if (json) {
+    print_json(session, result);
+  } else {
+    print_text(session, result, out);
+  }
+  return 0;
+}
+
+}  // namespace afford::cli

@@ -1,0 +1,31 @@
+// The scripted agent: a SampleSource that plays a compiled Script
+// (engine/script.h), interpolating between its keyframes linearly in time.
+#pragma once
+
+#include "sample_source.h"
+#include "script.h"
+
+namespace afford {
+
+class ScriptedAgent : public SampleSource {
+ public:
+  // Keeps a reference: the script must outlive the agent.
+  explicit ScriptedAgent(const Script& script) : script_(script) {}
+
+  // The sample at t (s): before the first keyframe its values, after the
+  // last (t > duration) nothing (returns false). Between keyframes the
+  // hand's position is interpolated linearly and its rotation by slerp;
+  // each fingertip linearly in the hand frame (a squeezing thumb by its
+  // angle about the pivot, script.h), then placed in the world by the
+  // interpolated hand; each joint angle linearly. At a keyframe's time the
+  // sample is that keyframe exactly. Allocates nothing.
+  bool sample_at(double t, Sample* out) override;
+
+  // The last keyframe's time, s.
+  double duration() const override { return script_.duration(); }
+
+ private:
+  const Script& script_;
+};
+
+}  // namespace afford

@@ -1,0 +1,321 @@
+// Agent scripts: YAML keyframes -> ScriptSpec -> Script (see script.h).
+#include "script.h"
+
+#include <cmath>
+#include <limits>
+
+#include "did_you_mean.h"
+#include "grasps.h"
+#include "load.h"
+#include "units.h"
+
+namespace afford {
+
+const std::array<Eigen::Vector3d, kFingers> kCurledFingertip = {
+    Eigen::Vector3d(0.060, 0.030, -0.030),   // thumb, folded over the palm
+    Eigen::Vector3d(0.070, 0.010, -0.030),   // index
+    Eigen::Vector3d(0.072, -0.008, -0.030),  // middle
+    Eigen::Vector3d(0.068, -0.025, -0.028),  // ring
+    Eigen::Vector3d(0.060, -0.040, -0.025),  // little
+};
+
+namespace {
+
+constexpr double kMinGripDistance = 1e-3;  // m: closer to the fulcrum a thumb cannot turn the lever
+
+// The key node of `key` in a mapping, for errors about the key itself.
+Node key_node(const Node& map, std::string_view key) {
+  for (auto it = map.yaml().begin(); it != map.yaml().end(); ++it) {
+    if (it->first.Scalar() == key) return map.child(it->first);
+  }
+  return map;
+}
+
+std::vector<std::string> finger_names() { return {kFingerNames.begin(), kFingerNames.end()}; }
+
+GripSpec read_grip(const Node& node) {
+  MapReader m(node, "the grip", {"thumb", "index", "squeeze"});
+  GripSpec g;
+  const Node thumb = m.required("thumb");
+  g.thumb = read_quantity(thumb, dim::length);
+  g.thumb_loc = thumb.loc();
+  const Node index = m.required("index");
+  g.index_loc = index.loc();
+  if (index.is_scalar() && index.yaml().Scalar() == "none") {
+    g.has_index = false;
+  } else {
+    if (!index.is_scalar()) index.fail("a length (e.g. '130 mm') or none");
+    g.index = read_quantity(index, dim::length);
+  }
+  const Node squeeze = m.required("squeeze");
+  g.squeeze_loc = squeeze.loc();
+  g.squeeze = require_non_negative(squeeze, read_quantity(squeeze, dim::length));
+  return g;
+}
+
+void read_posture(const Node& node, KeyframeSpec& k) {
+  k.posture_loc = node.loc();
+  if (node.is_scalar()) {
+    k.posture = PostureSource::named;
+    k.posture_name = read_name(node);
+    return;
+  }
+  if (!node.is_map()) node.fail("a grasp type's name or a mapping of every finger's joint angles");
+  k.posture = PostureSource::angles;
+  MapReader fingers(node, "the posture", finger_names());
+  for (size_t f = 0; f < kFingers; ++f) {
+    const Node angles = fingers.required(kFingerNames[f]);
+    if (!angles.is_sequence() || angles.size() != kJoints) {
+      angles.fail("three angles [distal, proximal, metacarpal]");
+    }
+    for (size_t j = 0; j < kJoints; ++j) {
+      k.joint[f][j] = read_quantity(angles[j], dim::angle);
+      k.joint_loc[f][j] = angles[j].loc();
+    }
+  }
+}
+
+KeyframeSpec read_keyframe(const Node& node, const KeyframeSpec* previous) {
+  MapReader m(node, "a keyframe", {"t", "hand", "grip", "fingertips", "posture"});
+  KeyframeSpec k;
+  k.loc = node.loc();
+  const Node t = m.required("t");
+  k.t_loc = t.loc();
+  k.t = read_quantity(t, dim::time);
+  if (previous == nullptr && k.t < 0) t.fail("a time of 0 s or more");
+  if (previous != nullptr && !(k.t > previous->t)) {
+    t.fail("a time after the previous keyframe's (" + format_quantity(previous->t, dim::time) + ")");
+  }
+  if (std::optional<Node> hand = m.optional("hand")) {
+    MapReader h(*hand, "the hand", {"position", "rotation"});
+    k.hand = read_pose(h);
+    k.has_hand = true;
+  }
+  if (m.has("grip") && m.has("fingertips")) {
+    key_node(node, "fingertips").fail("either grip or fingertips in one keyframe", "both");
+  }
+  if (std::optional<Node> grip = m.optional("grip")) {
+    k.fingers = FingerSource::grip;
+    k.grip = read_grip(*grip);
+  }
+  if (std::optional<Node> tips = m.optional("fingertips")) {
+    k.fingers = FingerSource::fingertips;
+    MapReader fingers(*tips, "the fingertips", finger_names());
+    for (size_t f = 0; f < kFingers; ++f) {
+      k.fingertip[f] = read_vector(fingers.required(kFingerNames[f]), dim::length);
+    }
+  }
+  if (std::optional<Node> posture = m.optional("posture")) read_posture(*posture, k);
+  if (previous == nullptr) {
+    const char* const kWhy = " in the first keyframe (it gives hand, grip or fingertips, and posture; later "
+                             "keyframes carry forward what they omit)";
+    if (!k.has_hand) node.fail("key 'hand'" + std::string(kWhy), "no such key");
+    if (k.fingers == FingerSource::carried) node.fail("key 'grip' or 'fingertips'" + std::string(kWhy), "neither");
+    if (k.posture == PostureSource::carried) node.fail("key 'posture'" + std::string(kWhy), "no such key");
+  }
+  return k;
+}
+
+Eigen::Isometry3d pose_of(const Eigen::Vector3d& position, const Eigen::Quaterniond& rotation) {
+  Eigen::Isometry3d iso = Eigen::Isometry3d::Identity();
+  iso.linear() = rotation.toRotationMatrix();
+  iso.translation() = position;
+  return iso;
+}
+
+// The extent of an arm: the lowest and highest distance any of its parts covers.
+void arm_extent(const Model& m, Arm arm, double* from, double* to) {
+  *from = std::numeric_limits<double>::infinity();
+  *to = -std::numeric_limits<double>::infinity();
+  for (const ModelPart& part : m.parts) {
+    if (part.arm != arm) continue;
+    const Eigen::Matrix3d rt = part.in_arm.linear().transpose();
+    const double x = part.in_arm.translation().x();
+    *from = std::min(*from, x - part.geometry.support(-rt * Eigen::Vector3d::UnitX()));
+    *to = std::max(*to, x + part.geometry.support(rt * Eigen::Vector3d::UnitX()));
+  }
+}
+
+// The point a fingertip of radius `radius` takes on an arm's outer face at r.
+Eigen::Vector3d on_face(const Model& m, Arm arm, double r, double radius, const SourceLoc& loc) {
+  const char* name = arm == Arm::moving ? "moving" : "fixed";
+  if (std::abs(r) < kMinGripDistance) {
+    fail(loc, std::string("a distance on the ") + name + " arm at least " +
+                  format_quantity(kMinGripDistance, dim::length) + " from the fulcrum",
+         format_quantity(r, dim::length));
+  }
+  double face = 0, z = 0;
+  if (!arm_outer_face(m, arm, r, &face, &z)) {
+    double from = 0, to = 0;
+    arm_extent(m, arm, &from, &to);
+    fail(loc,
+         std::string("a distance on the ") + name + " arm (its parts cover " + format_quantity(from, dim::length) +
+             " to " + format_quantity(to, dim::length) + ")",
+         format_quantity(r, dim::length));
+  }
+  const double side = face >= 0 ? 1.0 : -1.0;
+  return {r, face + side * (radius - kGripPress), z};
+}
+
+// Angles written in a keyframe must lie within the agent's ranges.
+void check_joints(const Model& m, const KeyframeSpec& k) {
+  for (size_t f = 0; f < kFingers; ++f) {
+    for (size_t j = 0; j < kJoints; ++j) {
+      const double v = k.joint[f][j], lo = m.joint_min[f][j], hi = m.joint_max[f][j];
+      if (v >= lo && v <= hi) continue;
+      fail(k.joint_loc[f][j],
+           "an angle within the agent's range (" + std::string(kFingerNames[f]) + " " + kJointNames[j] +
+               " between " + format_quantity(lo, dim::angle) + " and " + format_quantity(hi, dim::angle) + ")",
+           format_quantity(v, dim::angle));
+    }
+  }
+}
+
+// The joint angles that stand for the named grasp type.
+JointAngles named_posture(const Model& m, const KeyframeSpec& k) {
+  const std::vector<std::string>& names = m.grasp_name;
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (names[i] != k.posture_name) continue;
+    JointAngles joint{};
+    std::string why;
+    if (!grasp_posture(m, static_cast<int>(i), &joint, &why)) {
+      fail(k.posture_loc, "a grasp type the agent's joints can take", "'" + k.posture_name + "': " + why);
+    }
+    const int type = classify_grasp(m, joint);
+    if (type != static_cast<int>(i)) {
+      fail(k.posture_loc, "a grasp type whose posture the taxonomy classifies as itself",
+           "'" + k.posture_name + "', classified as " + (type < 0 ? "no type" : "'" + names[static_cast<size_t>(type)] + "'") +
+               " (an earlier type covers it)");
+    }
+    return joint;
+  }
+  if (names.empty()) {
+    fail(k.posture_loc, "joint angles (the session has no grasp taxonomy to name a posture from)",
+         "'" + k.posture_name + "'");
+  }
+  std::string expected = "a grasp type of the taxonomy (";
+  for (size_t i = 0; i < names.size(); ++i) expected += (i ? ", " : "") + names[i];
+  fail(k.posture_loc, expected + ")", "'" + k.posture_name + "'" + did_you_mean(k.posture_name, names));
+}
+
+}  // namespace
+
+ScriptSpec read_script(const Node& sequence) {
+  ScriptSpec spec;
+  spec.loc = sequence.loc();
+  if (!sequence.is_sequence() || sequence.size() == 0) sequence.fail("a sequence of keyframes");
+  for (size_t i = 0; i < sequence.size(); ++i) {
+    spec.keyframes.push_back(read_keyframe(sequence[i], i == 0 ? nullptr : &spec.keyframes.back()));
+  }
+  if (!(spec.keyframes.back().t > 0)) {
+    fail(spec.keyframes.back().t_loc, "a last keyframe after 0 s (the script's duration)",
+         format_quantity(spec.keyframes.back().t, dim::time));
+  }
+  return spec;
+}
+
+bool arm_outer_face(const Model& m, Arm arm, double r, double* face_y, double* mid_z) {
+  // Moving arm: +y for r > 0, -y for r < 0; the fixed arm the other way.
+  const double side = ((arm == Arm::moving) == (r >= 0)) ? 1.0 : -1.0;
+  const Eigen::Vector3d out = side * Eigen::Vector3d::UnitY();
+  bool found = false;
+  double best = -std::numeric_limits<double>::infinity();
+  for (const ModelPart& part : m.parts) {
+    if (part.arm != arm) continue;
+    const Eigen::Matrix3d rt = part.in_arm.linear().transpose();
+    const Eigen::Vector3d& p = part.in_arm.translation();
+    const Geometry& g = part.geometry;
+    const double x_lo = p.x() - g.support(-rt * Eigen::Vector3d::UnitX());
+    const double x_hi = p.x() + g.support(rt * Eigen::Vector3d::UnitX());
+    if (r < x_lo || r > x_hi) continue;
+    const double reach = p.dot(out) + g.support(rt * out);  // furthest extent along `out`
+    if (found && reach <= best) continue;
+    found = true;
+    best = reach;
+    *mid_z = p.z() + 0.5 * (g.support(rt * Eigen::Vector3d::UnitZ()) - g.support(-rt * Eigen::Vector3d::UnitZ()));
+  }
+  if (found) *face_y = side * best;
+  return found;
+}
+
+void grip_points(const Model& m, const GripSpec& grip, Eigen::Vector3d* thumb_rest, double* thumb_angle,
+                 Eigen::Vector3d* index) {
+  *thumb_rest = on_face(m, Arm::moving, grip.thumb, m.tip_radius[0], grip.thumb_loc);
+  // Squeezing turns the thumb's point about the pivot, closing.
+  *thumb_angle = m.theta_rest - grip.squeeze / std::abs(grip.thumb);
+  if (grip.has_index) *index = on_face(m, Arm::fixed, grip.index, m.tip_radius[1], grip.index_loc);
+}
+
+Eigen::Vector3d grip_thumb(const Keyframe& k, double angle_rad) {
+  return k.object_in_hand * (Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()) * k.thumb_rest);
+}
+
+bool grasp_posture(const Model& m, int type, JointAngles* out, std::string* why) {
+  constexpr size_t kPerType = static_cast<size_t>(kFingers) * kJoints;
+  const size_t base = static_cast<size_t>(type) * kPerType;
+  for (size_t f = 0; f < kFingers; ++f) {
+    for (size_t j = 0; j < kJoints; ++j) {
+      const double lo = std::max(m.grasp_joint_min[base + f * kJoints + j], m.joint_min[f][j]);
+      const double hi = std::min(m.grasp_joint_max[base + f * kJoints + j], m.joint_max[f][j]);
+      if (!(lo <= hi)) {
+        *why = std::string("its ") + kFingerNames[f] + " " + kJointNames[j] + " range lies outside the agent's (" +
+               format_quantity(m.joint_min[f][j], dim::angle) + " to " + format_quantity(m.joint_max[f][j], dim::angle) +
+               ")";
+        return false;
+      }
+      (*out)[f][j] = 0.5 * (lo + hi);
+    }
+  }
+  return true;
+}
+
+Script compile_script(const ScriptSpec& spec, const Model& m) {
+  if (!m.has_agent) throw LogicError("compile_script() needs a model with its agent");
+  Script script;
+  script.keyframes.reserve(spec.keyframes.size());
+  Eigen::Isometry3d object_world = m.object_start;  // where the script expects the tool
+  Eigen::Isometry3d object_in_hand = Eigen::Isometry3d::Identity();
+  bool holding = false;  // the last keyframe gripped the tool with a finger on the fixed arm
+  Keyframe current;
+  const GripSpec* grip = nullptr;  // the grip in force, if the fingers come from one
+  for (const KeyframeSpec& k : spec.keyframes) {
+    current.t = k.t;
+    if (k.has_hand) {
+      current.hand_position = k.hand.position;
+      current.hand_rotation = Eigen::Quaterniond(k.hand.rotation).normalized();
+    }
+    const Eigen::Isometry3d hand = pose_of(current.hand_position, current.hand_rotation);
+    if (k.fingers == FingerSource::grip) grip = &k.grip;
+    if (k.fingers == FingerSource::fingertips) {
+      grip = nullptr;
+      current.fingertip = k.fingertip;
+    }
+    current.grip = grip != nullptr;
+    if (grip != nullptr) {
+      Eigen::Vector3d index;
+      grip_points(m, *grip, &current.thumb_rest, &current.thumb_angle, &index);
+      if (grip->has_index && holding) {
+        object_world = hand * object_in_hand;  // grasped: the tool moves with the hand
+      } else {
+        object_in_hand = hand.inverse() * object_world;
+      }
+      current.object_in_hand = object_in_hand;
+      current.fingertip = kCurledFingertip;
+      current.fingertip[0] = grip_thumb(current, current.thumb_angle);
+      if (grip->has_index) current.fingertip[1] = object_in_hand * index;
+      holding = grip->has_index;
+    } else {
+      holding = false;
+    }
+    if (k.posture == PostureSource::named) {
+      current.joint = named_posture(m, k);
+    } else if (k.posture == PostureSource::angles) {
+      check_joints(m, k);
+      current.joint = k.joint;
+    }
+    script.keyframes.push_back(current);
+  }
+  return script;
+}
+
+}  // namespace afford

@@ -1,0 +1,66 @@
+// Observers that write a session to files (DESIGN.md "Traces").
+//
+// TraceWriter: the trace CSV, one format for simulation and measurement. A
+// header row, then one row per frame, SI units:
+//   t                      s, the frame's time
+//   angle                  rad, the lever's opening angle theta
+//   effort_force           N, F_ag at the emphasis along the rotation direction
+//   actee_force            N, F_acr between the jaws and the actee (0 without contact)
+//   effort_pos             m, the thumb's advance along the rotation direction past
+//                          the rest angle, |D_ag| * (theta_rest - theta_command)
+//                          (the script's `squeeze`); 0 while not grasped
+//   broken                 0/1, the actee has broken
+//   grasped                0/1, the agent grasps the tool
+//   held                   0/1, the jaws hold the actee
+//   contacts_object_actee  count, contact points between the tool and the actee
+//   actee_load             N, the jaws' force along the actee's A_d
+// Readers keep and ignore columns they do not know.
+//
+// TimelineWriter: one JSON object per line for each rule event:
+//   {"t":1.234,"event":"node_reached","function":"pinch","node":1,"text":"contacts(object, actee) >= 2"}
+// event is node_reached, node_lost or inferred; node is the node's index
+// (for inferred, the last node) and text its `when` as written.
+//
+// Both write with fprintf into a FILE* they do not own, and allocate
+// nothing per frame.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "observer.h"
+
+namespace afford {
+
+class TraceWriter : public Observer {
+ public:
+  explicit TraceWriter(std::FILE* out) : out_(out) {}
+  void on_start(const Model& model, const State& state, const RuleSet& rules) override;
+  void on_frame(const Model& model, const State& state, const RuleSet& rules, const RuleState& rs) override;
+  void on_end(const Model& model, const State& state, const RuleSet& rules, const RuleState& rs) override;
+  static const char* header();  // the header row, without the newline
+
+ private:
+  std::FILE* out_;
+};
+
+class TimelineWriter : public Observer {
+ public:
+  explicit TimelineWriter(std::FILE* out) : out_(out) {}
+  void on_start(const Model& model, const State& state, const RuleSet& rules) override;
+  void on_frame(const Model& model, const State& state, const RuleSet& rules, const RuleState& rs) override;
+  void on_end(const Model& model, const State& state, const RuleSet& rules, const RuleState& rs) override;
+
+ private:
+  std::FILE* out_;
+  // Escaped JSON strings, built once in on_start: per function its name,
+  // per function and node its text.
+  std::vector<std::string> function_json_;
+  std::vector<std::vector<std::string>> node_json_;
+};
+
+// s as a JSON string literal, quotes included.
+std::string json_string(const std::string& s);
+
+}  // namespace afford

@@ -1,0 +1,462 @@
+// Sessions: the agent script (interpolation, carry-forward), grips placed on
+// the arms' outer faces, session files and their errors (file:line:col),
+// the run loop with its trace and timeline, and whole-session determinism.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <sstream>
+
+#include "rig.h"
+#include "run.h"
+#include "scripted_agent.h"
+#include "session.h"
+#include "trace.h"
+
+namespace afford::test {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+const std::string kSource = AFFORD_SOURCE_DIR;
+// Session documents in tests are named as if they sat in sessions/, so that
+// their relative paths reach the shipped files.
+const std::string kName = kSource + "/sessions/test.yaml";
+
+// ------------------------------------------------------------ helpers
+
+std::string indent(const std::string& text, int spaces) {
+  std::string out, pad(static_cast<size_t>(spaces), ' ');
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out += pad + line + "\n";
+  return out;
+}
+
+// A nutcracker session with a walnut at 60 mm. Line numbers in the comments.
+const std::string kSession =
+    "session: test\n"                                                   // 1
+    "description: a test session\n"                                     // 2
+    "object: ../objects/nutcracker.yaml\n"                              // 3
+    "actee: {file: ../actees/walnut.yaml, at: 60 mm}\n"                 // 4
+    "agent: ../agents/hand.yaml\n"                                      // 5
+    "rules: ../rules/functions.yaml\n"                                  // 6
+    "grasps: ../rules/grasps.yaml\n"                                    // 7
+    "script:\n"                                                         // 8
+    "  - t: 0 s\n"                                                      // 9
+    "    hand: {position: [80 mm, 40 mm, 190 mm]}\n"                    // 10
+    "    grip: {thumb: 160 mm, index: 160 mm, squeeze: 0 mm}\n"         // 11
+    "    posture: medium_wrap\n"                                        // 12
+    "  - t: 1 s\n"                                                      // 13
+    "    grip: {thumb: 160 mm, index: 160 mm, squeeze: 10 mm}\n";       // 14
+
+// kSession with line `line` (1-based) replaced.
+std::string with_line(int line, const std::string& text) {
+  std::istringstream in(kSession);
+  std::string out;
+  int n = 0;
+  for (std::string l; std::getline(in, l);) out += (++n == line ? text : l) + "\n";
+  return out;
+}
+
+CompiledSession session_from(const std::string& yaml) { return read_session(load_yaml_string(yaml, kName)); }
+
+std::string session_error(const std::string& yaml) {
+  try {
+    session_from(yaml);
+  } catch (const DataError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no DataError for:\n" << yaml;
+  return "";
+}
+
+std::string at(int line, int column) { return "test.yaml:" + std::to_string(line) + ":" + std::to_string(column) + ": "; }
+
+// Captures what an observer writes (open_memstream: no file on disk).
+struct Capture {
+  Capture() : file(open_memstream(&data, &size)) {}
+  ~Capture() {
+    if (file != nullptr) std::fclose(file);
+    std::free(data);
+  }
+  std::string text() {
+    std::fflush(file);
+    return std::string(data, size);
+  }
+  char* data = nullptr;
+  size_t size = 0;
+  std::FILE* file;
+};
+
+struct Outputs {
+  RunResult result;
+  std::string trace, timeline;
+};
+
+Outputs run_with_writers(const CompiledSession& s) {
+  Capture trace, timeline;
+  TraceWriter trace_writer(trace.file);
+  TimelineWriter timeline_writer(timeline.file);
+  Observer* const observers[] = {&trace_writer, &timeline_writer};
+  ScriptedAgent agent(s.script);
+  Outputs out;
+  out.result = run_session(s.model, *s.rules, agent, observers);
+  out.trace = trace.text();
+  out.timeline = timeline.text();
+  return out;
+}
+
+int count_lines(const std::string& text) {
+  int n = 0;
+  for (char c : text) n += c == '\n';
+  return n;
+}
+
+std::vector<std::string> function_names(const RunResult& r) {
+  std::vector<std::string> names;
+  for (const Inference& i : r.inferences) names.push_back(i.function);
+  return names;
+}
+
+// ------------------------------------------------------------ interpolation
+
+Script two_keyframes() {
+  Script s;
+  Keyframe a, b;
+  a.t = 1.0;
+  b.t = 3.0;
+  a.hand_position = {0.0, 0.0, 0.0};
+  b.hand_position = {0.2, 0.4, -0.6};
+  a.hand_rotation = Eigen::Quaterniond::Identity();
+  b.hand_rotation = Eigen::Quaterniond(Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitZ()));
+  for (size_t f = 0; f < kFingers; ++f) {
+    a.fingertip[f] = Eigen::Vector3d(0.1, 0.01 * static_cast<double>(f), 0.0);
+    b.fingertip[f] = Eigen::Vector3d(0.3, 0.01 * static_cast<double>(f), 0.2);
+    for (size_t j = 0; j < kJoints; ++j) {
+      a.joint[f][j] = 0.0;
+      b.joint[f][j] = 0.5 + 0.25 * static_cast<double>(j);
+    }
+  }
+  s.keyframes = {a, b};
+  return s;
+}
+
+TEST(Script, MidpointsAreExact) {
+  const Script s = two_keyframes();
+  ScriptedAgent agent(s);
+  Sample sample;
+  ASSERT_TRUE(agent.sample_at(2.0, &sample));
+  EXPECT_EQ(sample.t, 2.0);
+  EXPECT_EQ(sample.hand.translation(), Eigen::Vector3d(0.1, 0.2, -0.3));
+  EXPECT_EQ(sample.joint[2][0], 0.25);
+  EXPECT_EQ(sample.joint[2][1], 0.375);
+  EXPECT_EQ(sample.joint[2][2], 0.5);
+  // The fingertip halfway in the hand frame, placed by the halfway hand.
+  const Eigen::Vector3d in_hand = sample.hand.inverse() * sample.fingertip[1];
+  EXPECT_NEAR((in_hand - Eigen::Vector3d(0.2, 0.01, 0.1)).norm(), 0, 1e-15);
+}
+
+TEST(Script, RotationIsSlerped) {
+  const Script s = two_keyframes();
+  ScriptedAgent agent(s);
+  Sample sample;
+  for (double u : {0.25, 0.5, 0.75}) {
+    ASSERT_TRUE(agent.sample_at(1.0 + 2.0 * u, &sample));
+    const Eigen::AngleAxisd turn(sample.hand.linear());
+    EXPECT_NEAR(turn.angle(), u * std::numbers::pi / 2, 1e-12) << u;
+    EXPECT_NEAR((turn.axis() - Eigen::Vector3d::UnitZ()).norm(), 0, 1e-12) << u;
+  }
+}
+
+TEST(Script, KeyframesExactlyAndTheEnds) {
+  const Script s = two_keyframes();
+  ScriptedAgent agent(s);
+  EXPECT_EQ(agent.duration(), 3.0);
+  Sample sample;
+  ASSERT_TRUE(agent.sample_at(3.0, &sample));  // the last keyframe itself
+  EXPECT_EQ(sample.hand.translation(), s.keyframes[1].hand_position);
+  EXPECT_EQ(sample.joint[4][2], 1.0);
+  ASSERT_TRUE(agent.sample_at(0.5, &sample));  // before the first: the first
+  EXPECT_EQ(sample.hand.translation(), Eigen::Vector3d::Zero());
+  EXPECT_EQ(sample.fingertip[0], s.keyframes[0].fingertip[0]);
+  EXPECT_FALSE(agent.sample_at(3.001, &sample));  // the script is over
+}
+
+TEST(Script, LaterKeyframesCarryForwardWhatTheyOmit) {
+  const CompiledSession s = session_from(kSession +
+                                         "  - t: 2 s\n"
+                                         "    hand: {position: [80 mm, 40 mm, 250 mm]}\n"
+                                         "  - t: 3 s\n"
+                                         "    posture: tripod\n");
+  const std::vector<Keyframe>& k = s.script.keyframes;
+  ASSERT_EQ(k.size(), 4u);
+  // Keyframe 1 keeps the hand and the posture of keyframe 0.
+  EXPECT_EQ(k[1].hand_position, k[0].hand_position);
+  EXPECT_EQ(k[1].joint, k[0].joint);
+  EXPECT_NE(k[1].fingertip[0], k[0].fingertip[0]);  // the squeeze moved the thumb
+  // Keyframe 2 moves the hand and keeps the grip: the tool moves with the
+  // hand, so the fingertips keep their place in the hand frame.
+  EXPECT_EQ(k[2].hand_position, Eigen::Vector3d(0.08, 0.04, 0.25));
+  for (size_t f = 0; f < kFingers; ++f) EXPECT_NEAR((k[2].fingertip[f] - k[1].fingertip[f]).norm(), 0, 1e-15);
+  EXPECT_EQ(k[2].joint, k[0].joint);
+  // Keyframe 3 changes only the posture.
+  EXPECT_EQ(k[3].hand_position, k[2].hand_position);
+  EXPECT_EQ(k[3].fingertip, k[2].fingertip);
+  EXPECT_NE(k[3].joint, k[2].joint);
+  EXPECT_EQ(classify_grasp(s.model, k[3].joint), 5);  // tripod, the sixth type
+  EXPECT_EQ(classify_grasp(s.model, k[0].joint), 1);  // medium_wrap
+}
+
+TEST(Script, ASqueezeTurnsTheThumbOnTheArc) {
+  const CompiledSession s = session_from(kSession);
+  ScriptedAgent agent(s.script);
+  const Keyframe& k = s.script.keyframes[0];
+  const double r = std::hypot(k.thumb_rest.x(), k.thumb_rest.y());
+  Sample sample;
+  for (double t : {0.25, 0.5, 0.75}) {
+    ASSERT_TRUE(agent.sample_at(t, &sample));
+    const Eigen::Vector3d in_object = s.model.object_start.inverse() * sample.fingertip[0];
+    // On the circle about the pivot (a chord would cut inside it), at the
+    // squeeze's share of the angle.
+    EXPECT_NEAR(std::hypot(in_object.x(), in_object.y()), r, 1e-12) << t;
+    const double angle = std::atan2(in_object.y(), in_object.x()) - std::atan2(k.thumb_rest.y(), k.thumb_rest.x());
+    EXPECT_NEAR(angle, s.model.theta_rest - t * 0.010 / 0.160, 1e-12) << t;
+  }
+}
+
+// ------------------------------------------------------------ grips
+
+// An inline session for one of the rig's tools (every lever pattern) with
+// the thumb and index on the arms at the rig's effort distance.
+std::string rig_session(const Tool& tool, double squeeze_mm) {
+  char grip[160];
+  std::snprintf(grip, sizeof grip, "    grip: {thumb: %g mm, index: %g mm, squeeze: %g mm}\n", tool.effort * 1000,
+                tool.effort * 1000, squeeze_mm);
+  return std::string("session: rig\ndescription: rig tool\nobject:\n") + indent(tool.yaml, 2) + "agent:\n" +
+         indent(kHandYaml, 2) +
+         "rules: ../rules/functions.yaml\ngrasps: ../rules/grasps.yaml\nscript:\n"
+         "  - t: 0 s\n    hand: {position: [0 mm, 0 mm, 100 mm]}\n" +
+         grip + "    posture: medium_wrap\n  - t: 1 s\n";
+}
+
+TEST(Grip, FingersLandOnTheOuterFacesOfEveryPattern) {
+  for (const Tool& tool : tools_of_every_pattern()) {
+    const CompiledSession s = session_from(rig_session(tool, 0));
+    ScriptedAgent agent(s.script);
+    auto state = make_state(s.model);
+    Sample sample;
+    for (int k = 1; k <= 3; ++k) {
+      ASSERT_TRUE(agent.sample_at(k * s.model.timestep, &sample));
+      step(s.model, *state, sample);
+    }
+    EXPECT_TRUE(state->finger_on_arm[0] & 2) << tool.name << ": thumb on the moving arm";
+    EXPECT_FALSE(state->finger_on_arm[0] & 1) << tool.name;
+    EXPECT_TRUE(state->finger_on_arm[1] & 1) << tool.name << ": index on the fixed arm";
+    EXPECT_FALSE(state->finger_on_arm[1] & 2) << tool.name;
+    for (size_t f = 2; f < kFingers; ++f) EXPECT_EQ(state->finger_on_arm[f], 0) << tool.name << " finger " << f;
+    EXPECT_TRUE(state->grasped) << tool.name;
+    // The thumb's centre sits one tip radius (less the press) outside the
+    // 10 mm thick arm, on the side away from the other arm.
+    const Eigen::Vector3d thumb =
+        moving_arm_pose(s.model.theta_rest).inverse() * (s.model.object_start.inverse() * state->fingertip[0]);
+    const double side = tool.effort > 0 ? 1.0 : -1.0;
+    EXPECT_NEAR(thumb.x(), tool.effort, 1e-12) << tool.name;
+    EXPECT_NEAR(thumb.y(), side * (kThickness + s.model.tip_radius[0] - kGripPress), 1e-12) << tool.name;
+    const Eigen::Vector3d index = s.model.object_start.inverse() * state->fingertip[1];
+    EXPECT_NEAR(index.y(), -side * (kThickness + s.model.tip_radius[1] - kGripPress), 1e-12) << tool.name;
+  }
+}
+
+TEST(Grip, SqueezeClosesTheFreeLeverByItsArc) {
+  const Tool tool = tools_of_every_pattern()[0];  // type 2, thumb at 150 mm, opens to 50 deg
+  // Still for 1 s (the grasp starts), then 30 mm in 1 s.
+  const CompiledSession s = session_from(rig_session(tool, 0) + "  - t: 2 s\n" +
+                                         "    grip: {thumb: 150 mm, index: 150 mm, squeeze: 30 mm}\n");
+  ScriptedAgent agent(s.script);
+  auto state = make_state(s.model);
+  Sample sample;
+  for (int k = 1; k <= 2000; ++k) {
+    ASSERT_TRUE(agent.sample_at(k * s.model.timestep, &sample));
+    step(s.model, *state, sample);
+  }
+  ASSERT_TRUE(state->grasped);
+  // Within the solver's first-order step (eq. 1 projects each frame's
+  // motion on the arm as it was): 1e-5 rad is 1.5 um at the thumb.
+  EXPECT_NEAR(state->theta, s.model.theta_rest - 0.030 / 0.150, 1e-5);
+  EXPECT_TRUE(state->finger_on_arm[0] & 2);
+}
+
+// ------------------------------------------------------------ session errors
+
+TEST(SessionErrors, UnknownKeySaysDidYouMean) {
+  const std::string e = session_error(with_line(8, "scirpt:"));
+  EXPECT_THAT(e, HasSubstr(at(8, 1) + "expected one of the keys of a session file"));
+  EXPECT_THAT(e, HasSubstr("found 'scirpt' (did you mean 'script'?)"));
+}
+
+TEST(SessionErrors, MissingFileIsReportedAtItsKey) {
+  const std::string e = session_error(with_line(3, "object: ../objects/nutcraker.yaml"));
+  EXPECT_THAT(e, HasSubstr(at(3, 1) + "expected a readable file '../objects/nutcraker.yaml' (relative to the "
+                                      "session's folder), found none"));
+  EXPECT_THAT(session_error(with_line(4, "actee: {file: ../actees/wallnut.yaml, at: 60 mm}")),
+              HasSubstr(at(4, 9) + "expected a readable file '../actees/wallnut.yaml'"));
+  EXPECT_THAT(session_error(with_line(6, "rules: ../rules")), HasSubstr(at(6, 1) + "expected a readable file '../rules' "
+                                                                         "(relative to the session's folder), found a directory"));
+}
+
+TEST(SessionErrors, AMistakeInANamedFileNamesThatFile) {
+  const std::string e = session_error(with_line(5, "agent: ../actees/walnut.yaml"));
+  EXPECT_THAT(e, HasSubstr("/actees/walnut.yaml:19:1: expected one of the keys of an agent file"));
+}
+
+TEST(SessionErrors, TimesMustIncrease) {
+  const std::string e = session_error(with_line(13, "  - t: 0 s"));
+  EXPECT_THAT(e, HasSubstr(at(13, 8) + "expected a time after the previous keyframe's (0 s), found '0 s'"));
+  EXPECT_THAT(session_error(with_line(13, "  - t: 1 mm")), HasSubstr(at(13, 8) + "expected a time"));
+}
+
+TEST(SessionErrors, GripOffTheArm) {
+  const std::string e = session_error(with_line(14, "    grip: {thumb: 200 mm, index: 160 mm, squeeze: 10 mm}"));
+  EXPECT_THAT(e, HasSubstr(at(14, 19) + "expected a distance on the moving arm (its parts cover 0 mm to 185 mm), "
+                                        "found 200 mm"));
+  EXPECT_THAT(session_error(with_line(11, "    grip: {thumb: 160 mm, index: -5 mm, squeeze: 0 mm}")),
+              HasSubstr(at(11, 34) + "expected a distance on the fixed arm"));
+  EXPECT_THAT(session_error(with_line(11, "    grip: {thumb: 160 mm, index: 160 mm, squeeze: -1 mm}")),
+              HasSubstr(at(11, 51) + "expected a value of zero or more"));
+}
+
+TEST(SessionErrors, UnknownPostureSaysDidYouMean) {
+  const std::string e = session_error(with_line(12, "    posture: medium_warp"));
+  EXPECT_THAT(e, HasSubstr(at(12, 14) + "expected a grasp type of the taxonomy (small_wrap, medium_wrap"));
+  EXPECT_THAT(e, HasSubstr("found 'medium_warp' (did you mean 'medium_wrap'?)"));
+}
+
+TEST(SessionErrors, JointAnglesOutsideTheAgentsRange) {
+  const std::string e = session_error(with_line(
+      12, "    posture: {thumb: [0 deg, 0 deg, 90 deg], index: [0 deg, 0 deg, 0 deg], middle: [0 deg, 0 deg, 0 deg], "
+          "ring: [0 deg, 0 deg, 0 deg], little: [0 deg, 0 deg, 0 deg]}"));
+  EXPECT_THAT(e, HasSubstr(at(12, 37) + "expected an angle within the agent's range (thumb metacarpal between 0 deg "
+                                        "and 70 deg), found 90 deg"));
+}
+
+TEST(SessionErrors, TheFirstKeyframeGivesEverything) {
+  const std::string e = session_error(with_line(12, "    # no posture"));
+  EXPECT_THAT(e, HasSubstr(at(9, 5) + "expected key 'posture' in the first keyframe"));
+  EXPECT_THAT(session_error(with_line(11, "    fingertips: {thumb: [0 mm, 0 mm, 0 mm]}")),
+              HasSubstr(at(11, 17) + "expected key 'index' in the fingertips"));
+}
+
+TEST(SessionErrors, GripAndFingertipsAreExclusive) {
+  const std::string e = session_error(kSession + "    fingertips: {}\n");
+  EXPECT_THAT(e, HasSubstr(at(15, 5) + "expected either grip or fingertips in one keyframe, found both"));
+}
+
+TEST(SessionErrors, ActeePlacement) {
+  EXPECT_THAT(session_error(with_line(4, "actee: {file: ../actees/walnut.yaml, at: 60 mm, position: [0 mm, 0 mm, 0 mm]}")),
+              HasSubstr(at(4, 49) + "expected either 'at' (on the fixed jaw) or 'position' (in the world), found both"));
+  EXPECT_THAT(session_error(with_line(4, "actee: {file: ../actees/walnut.yaml, at: 20 cm}")),
+              HasSubstr(at(4, 42) + "expected a distance on the arm, between 0 mm and 185 mm, found 200 mm"));
+  EXPECT_THAT(session_error(with_line(4, "actee: {file: ../actees/coconut.yaml, at: 60 mm}")),
+              HasSubstr(at(4, 43) + "expected an actee that fits between the jaws"));
+}
+
+TEST(SessionErrors, Options) {
+  EXPECT_THAT(session_error(kSession + "timestep: 0 ms\n"), HasSubstr(at(15, 11) + "expected a value greater than zero"));
+  EXPECT_THAT(session_error(kSession + "contact_tolerance: 1 s\n"), HasSubstr(at(15, 20) + "expected a length"));
+}
+
+TEST(Session, ReadsEveryFileAndDefaults) {
+  const CompiledSession s = session_from(kSession);
+  EXPECT_EQ(s.name, "test");
+  EXPECT_EQ(s.model.timestep, 1e-3);
+  EXPECT_EQ(s.model.contact_tolerance, 5e-4);
+  EXPECT_TRUE(s.model.has_actee);
+  ASSERT_EQ(s.files.size(), 6u);
+  EXPECT_EQ(s.files[0], kName);
+  EXPECT_EQ(s.files[1], kSource + "/objects/nutcracker.yaml");
+  EXPECT_EQ(s.files[5], kSource + "/rules/grasps.yaml");
+  EXPECT_EQ(s.script.duration(), 1.0);
+  const CompiledSession t = session_from(kSession + "timestep: 2 ms\ncontact_tolerance: 0.2 mm\n");
+  EXPECT_EQ(t.model.timestep, 2e-3);
+  EXPECT_EQ(t.model.contact_tolerance, 2e-4);
+}
+
+TEST(Session, InlineFilesAndNoActee) {
+  std::string yaml = kSession;
+  yaml.replace(yaml.find("actee: {file: ../actees/walnut.yaml, at: 60 mm}\n"), 48, "");
+  yaml.replace(yaml.find("agent: ../agents/hand.yaml\n"), 27, "agent:\n" + indent(kHandYaml, 2));
+  const CompiledSession s = session_from(yaml);
+  EXPECT_FALSE(s.model.has_actee);
+  EXPECT_EQ(s.model.agent_name, "test_hand");
+  EXPECT_EQ(s.files.size(), 4u);  // session, object, rules, grasps
+}
+
+// ------------------------------------------------------------ run, trace, timeline
+
+TEST(Run, TraceHasTheHeaderAndOneRowPerFrame) {
+  const CompiledSession s = session_from(kSession);
+  const Outputs out = run_with_writers(s);
+  EXPECT_EQ(out.result.frames, 1000);
+  EXPECT_DOUBLE_EQ(out.result.end_time, 1.0);
+  EXPECT_THAT(out.trace, StartsWith("t,angle,effort_force,actee_force,effort_pos,broken,grasped,held,"
+                                    "contacts_object_actee,actee_load\n0.001000,"));
+  EXPECT_EQ(count_lines(out.trace), 1001);
+  EXPECT_THAT(out.trace, HasSubstr("\n1.000000,"));
+}
+
+TEST(Run, TimelineHasOneJsonLinePerEvent) {
+  const CompiledSession s = session_from(kSession);
+  const Outputs out = run_with_writers(s);
+  EXPECT_THAT(out.timeline,
+              StartsWith("{\"t\":0.002000,\"event\":\"node_reached\",\"function\":\"pinch\",\"node\":0,"
+                         "\"text\":\"grasping(agent, object)\"}\n"));
+  EXPECT_THAT(out.timeline, HasSubstr("\"event\":\"inferred\",\"function\":\"pinch\",\"node\":2,"));
+}
+
+TEST(Run, PaperTongsInfersPinchHoldCarryCrashInOrder) {
+  const Outputs out = run_with_writers(load_session(kSource + "/sessions/paper-tongs.yaml"));
+  EXPECT_EQ(function_names(out.result), (std::vector<std::string>{"pinch", "hold", "carry", "crash"}));
+}
+
+TEST(Run, NothingIsInferredWithoutAnActeeInTheJawsOrWithoutAGrasp) {
+  for (const char* name : {"too-large", "push-without-grasp"}) {
+    const Outputs out = run_with_writers(load_session(kSource + "/sessions/" + name + ".yaml"));
+    EXPECT_TRUE(out.result.inferences.empty()) << name;
+  }
+}
+
+TEST(Run, TheSpongeIsCarriedAndNeverBreaks) {
+  const Outputs out = run_with_writers(load_session(kSource + "/sessions/sponge-tongs.yaml"));
+  const std::vector<std::string> names = function_names(out.result);
+  EXPECT_THAT(names, ::testing::IsSupersetOf({"pinch", "hold", "carry"}));
+  // Column 6 of every row is `broken`.
+  std::istringstream rows(out.trace);
+  std::string row;
+  std::getline(rows, row);
+  int n = 0;
+  while (std::getline(rows, row)) {
+    size_t comma = 0;
+    for (int c = 0; c < 5; ++c) comma = row.find(',', comma) + 1;
+    ASSERT_EQ(row[comma], '0') << row;
+    ++n;
+  }
+  EXPECT_EQ(n, out.result.frames);
+}
+
+TEST(Run, AWholeSessionIsDeterministic) {
+  const CompiledSession s = load_session(kSource + "/sessions/paper-tongs.yaml");
+  const Outputs first = run_with_writers(s);
+  const Outputs second = run_with_writers(s);
+  EXPECT_GT(first.trace.size(), 100000u);
+  EXPECT_EQ(first.trace, second.trace);
+  EXPECT_EQ(first.timeline, second.timeline);
+  // A session loaded again gives the same bytes too.
+  EXPECT_EQ(run_with_writers(load_session(kSource + "/sessions/paper-tongs.yaml")).trace, first.trace);
+}
+
+}  // namespace
+}  // namespace afford::test
