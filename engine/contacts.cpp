@@ -30,6 +30,7 @@ void agent_object(const Model& m, State& s) {
 
 void object_actee(const Model& m, State& s) {
   s.object_actee.clear();
+  s.actee_arms = 0;
   if (s.between_jaws) {
     // It rests on the fixed jaw; the moving jaw touches it once closed to
     // the contact angle (within the tolerance, as an angle at the actee).
@@ -42,6 +43,7 @@ void object_actee(const Model& m, State& s) {
       if (!jc.touching || (on_moving && !closed_on)) continue;
       const Eigen::Isometry3d& arm = on_moving ? moving : s.object_pose;
       s.object_actee.add(ContactPoint{arm * jc.in_arm.point, arm.linear() * jc.in_arm.normal, jc.in_arm.distance});
+      s.actee_arms |= static_cast<std::uint8_t>(on_moving ? 2 : 1);
     }
     return;
   }
@@ -52,6 +54,7 @@ void object_actee(const Model& m, State& s) {
     if (boxes_apart(part.geometry, pose, m.actee(), s.actee_pose, m.contact_tolerance)) continue;
     if (s.query->contact(part.geometry, pose, m.actee(), s.actee_pose, m.contact_tolerance, &c)) {
       s.object_actee.add(c);
+      s.actee_arms |= static_cast<std::uint8_t>(part.arm == Arm::moving ? 2 : 1);
     }
   }
 }
@@ -77,6 +80,7 @@ void find_contacts(const Model& m, State& s) {
   // frame after the break: on that frame the jaws still touched it).
   if (!m.has_actee || (s.condition == ActeeCondition::broken && s.broke_at < s.t)) {
     s.object_actee.clear();
+    s.actee_arms = 0;
     s.agent_actee.clear();
     return;
   }

@@ -51,11 +51,6 @@ class Writer {
   const double* values_;
 };
 
-std::string format_time(double t) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f s", t);
-  return buf;
-}
 
 }  // namespace
 
@@ -76,7 +71,7 @@ std::vector<Inference> inferences(const RuleSet& rules, const RuleState& rs) {
         text = Writer(node, rs.log_values.data() + r.values_at + node.value_offset).write(node.tree.root);
       }
       if (node.min_duration > 0) text += " (held for " + format_quantity(node.min_duration, dim::time) + ")";
-      inf.nodes.push_back({text + " at " + format_time(t), t});
+      inf.nodes.push_back({text, t});
     }
     out.push_back(std::move(inf));
   }

@@ -275,7 +275,7 @@ Script compile_script(const ScriptSpec& spec, const Model& m) {
   script.keyframes.reserve(spec.keyframes.size());
   Eigen::Isometry3d object_world = m.object_start;  // where the script expects the tool
   Eigen::Isometry3d object_in_hand = Eigen::Isometry3d::Identity();
-  bool holding = false;  // the last keyframe gripped the tool with a finger on the fixed arm
+  bool holding = false;  // the last keyframe grasped the tool: a finger on the fixed arm, a grasp posture
   Keyframe current;
   const GripSpec* grip = nullptr;  // the grip in force, if the fingers come from one
   for (const KeyframeSpec& k : spec.keyframes) {
@@ -285,6 +285,14 @@ Script compile_script(const ScriptSpec& spec, const Model& m) {
       current.hand_rotation = Eigen::Quaterniond(k.hand.rotation).normalized();
     }
     const Eigen::Isometry3d hand = pose_of(current.hand_position, current.hand_rotation);
+    if (k.posture == PostureSource::named) {
+      current.joint = named_posture(m, k);
+    } else if (k.posture == PostureSource::angles) {
+      check_joints(m, k);
+      current.joint = k.joint;
+    }
+    // Only a posture of the taxonomy grasps (when there is one).
+    const bool posture_grasps = m.grasp_name.empty() || classify_grasp(m, current.joint) >= 0;
     if (k.fingers == FingerSource::grip) grip = &k.grip;
     if (k.fingers == FingerSource::fingertips) {
       grip = nullptr;
@@ -292,9 +300,10 @@ Script compile_script(const ScriptSpec& spec, const Model& m) {
     }
     current.grip = grip != nullptr;
     if (grip != nullptr) {
-      Eigen::Vector3d index;
+      Eigen::Vector3d index = Eigen::Vector3d::Zero();
       grip_points(m, *grip, &current.thumb_rest, &current.thumb_angle, &index);
-      if (grip->has_index && holding) {
+      const bool grasps = grip->has_index && posture_grasps;
+      if (grasps && holding) {
         object_world = hand * object_in_hand;  // grasped: the tool moves with the hand
       } else {
         object_in_hand = hand.inverse() * object_world;
@@ -303,15 +312,9 @@ Script compile_script(const ScriptSpec& spec, const Model& m) {
       current.fingertip = kCurledFingertip;
       current.fingertip[0] = grip_thumb(current, current.thumb_angle);
       if (grip->has_index) current.fingertip[1] = object_in_hand * index;
-      holding = grip->has_index;
+      holding = grasps;
     } else {
       holding = false;
-    }
-    if (k.posture == PostureSource::named) {
-      current.joint = named_posture(m, k);
-    } else if (k.posture == PostureSource::angles) {
-      check_joints(m, k);
-      current.joint = k.joint;
     }
     script.keyframes.push_back(current);
   }

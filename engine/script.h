@@ -27,7 +27,8 @@
 //                                (rules/grasps.yaml): every joint at the
 //                                middle of the type's range and the agent's;
 //                                a joint the type leaves free at the middle of
-//                                the agent's range
+//                                the agent's range (this posture must
+//                                classify as the type itself)
 //   posture: {thumb: [distal, proximal, metacarpal], index: ..., ...}
 //                                every joint angle (Fig. 8), within the
 //                                agent's ranges
@@ -54,7 +55,8 @@
 // squeeze / |r|. The points are placed in the world through the tool's
 // pose and into the hand frame through the keyframe's hand pose. The tool's
 // pose is its functional pose (Model::object_start) until a grip with a
-// finger on the fixed arm starts; while such grips follow one another the
+// finger on the fixed arm, in a posture of the grasp taxonomy, starts (the
+// simulation's grasp, Sec. 4.3.1); while such grips follow one another the
 // tool moves with the hand (the simulation grasps it), so the tool keeps
 // its pose in the hand frame from the keyframe where the grip started;
 // after the grip ends the tool stays where the last grip keyframe left it.

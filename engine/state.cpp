@@ -109,6 +109,7 @@ std::uint64_t state_hash(const State& s) {
   h.value(s.condition);
   for (bool b : {s.at_limit, s.blocked, s.between_jaws, s.held}) h.value(b);
   h.contacts(s.object_actee);
+  h.value(s.actee_arms);
   h.contacts(s.agent_actee);
   return h.h;
 }

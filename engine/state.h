@@ -120,6 +120,7 @@ struct State {
   ContactSet agent_object;
   std::array<std::uint8_t, kFingers> finger_on_arm{};  // bit 0: fixed arm, bit 1: moving arm
   ContactSet object_actee;
+  std::uint8_t actee_arms = 0;  // arms touching the actee: bit 0 fixed, bit 1 moving
   ContactSet agent_actee;
 
   // --- scratch: reusable query objects (not part of the simulated state)

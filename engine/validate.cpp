@@ -5,10 +5,11 @@
 #include "load.h"
 #include "model.h"
 #include "rules.h"
+#include "session.h"
 
 namespace afford {
 
-std::vector<std::string> file_kinds() { return {"object", "actee", "agent", "functions", "grasps"}; }
+std::vector<std::string> file_kinds() { return {"object", "actee", "agent", "functions", "grasps", "session"}; }
 
 std::string validate_file(const std::string& path) {
   const Node root = load_yaml_file(path);
@@ -27,6 +28,10 @@ std::string validate_file(const std::string& path) {
   if (kind == "functions") {
     const auto rules = load_rules(path);
     return "function models, " + std::to_string(function_count(*rules)) + " functions";
+  }
+  if (kind == "session") {
+    const CompiledSession session = read_session(root);
+    return "session " + session.name + ", " + std::to_string(session.files.size()) + " files";
   }
   if (kind == "grasps") return "grasp taxonomy, " + std::to_string(read_grasps(root).size()) + " types";
   const std::vector<std::string> kinds = file_kinds();

@@ -251,13 +251,17 @@ TEST(Contacts, OverlapNormalPointsFromAToB) {
   }
 }
 
+// A sphere (a fingertip) whose centre is inside the other shape is a deep
+// overlap: reported at its centre, at least its radius deep, with a unit
+// normal, and without a collision query.
 TEST(Contacts, ConcentricSpheresStillGiveAUnitNormal) {
   const Geometry s = Geometry::compile(sphere(0.5));
   ContactQuery q;
   ContactPoint c;
   ASSERT_TRUE(q.contact(s, at(1, 1, 1), s, at(1, 1, 1), 0, &c));
-  EXPECT_NEAR(c.distance, -1.0, kExact);
+  EXPECT_LE(c.distance, -0.5);
   EXPECT_NEAR(c.normal.norm(), 1.0, kExact);
+  EXPECT_NEAR((c.point - Eigen::Vector3d(1, 1, 1)).norm(), 0, kExact);
 }
 
 // ---------------------------------------------------------------- x-axis shapes

@@ -395,6 +395,17 @@ TEST(Session, InlineFilesAndNoActee) {
   EXPECT_EQ(s.files.size(), 4u);  // session, object, rules, grasps
 }
 
+TEST(Session, InlineActeeInTheJaws) {
+  const Tool tool = tools_of_every_pattern()[0];  // type 2, load at 40 mm
+  std::string yaml = rig_session(tool, 0);
+  yaml.insert(yaml.find("agent:\n"), "actee:\n  file:\n" + indent(nut_yaml(), 4) + "  at: 40 mm\n");
+  const CompiledSession s = session_from(yaml);
+  ASSERT_TRUE(s.model.has_actee);
+  EXPECT_EQ(s.model.actee_name, "nut");
+  EXPECT_NEAR(s.model.actee_start.translation().x(), 0.040, 1e-15);
+  EXPECT_EQ(s.files.size(), 3u);  // session, rules, grasps
+}
+
 // ------------------------------------------------------------ run, trace, timeline
 
 TEST(Run, TraceHasTheHeaderAndOneRowPerFrame) {
