@@ -16,7 +16,7 @@ const std::vector<Command>& commands() {
        run_describe},
       {"rules", "rules --list | rules FILE", "the predicate vocabulary, or the function models of a file",
        run_rules},
-      {"run", "run SESSION [--json] [--out DIR]",
+      {"run", "run SESSION [--json] [--out DIR] [--watch [--runs N]]",
        "simulate a session: inferred functions and why, timeline and trace files", run_run},
   };
   return kCommands;

@@ -1,10 +1,15 @@
-// afford run SESSION [--json] [--out DIR]: simulates a session file, prints
-// each inferred function with its time and explanation, and writes the
-// timeline (DIR/timeline.jsonl) and the trace (DIR/trace.csv); DIR defaults
-// to out/<session name>.
+// afford run SESSION [--json] [--out DIR] [--watch [--runs N]]: simulates a
+// session file, prints each inferred function with its time and
+// explanation, and writes the timeline (DIR/timeline.jsonl) and the trace
+// (DIR/trace.csv); DIR defaults to out/<session name>. With --watch it runs
+// again whenever a file the session uses changes.
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <thread>
 
 #include "commands.h"
 #include "run.h"
@@ -62,32 +67,13 @@ void print_json(const CompiledSession& s, const RunResult& r) {
   std::cout << j << "\n";
 }
 
-}  // namespace
-
-int run_run(const Args& args) {
-  std::string file, out_dir;
-  bool json = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--json") {
-      json = true;
-    } else if (args[i] == "--out") {
-      if (i + 1 >= args.size()) return usage_error("--out needs a DIR");
-      out_dir = args[++i];
-    } else if (!args[i].empty() && args[i][0] == '-') {
-      return usage_error("run: unknown option '" + args[i] + "'");
-    } else if (file.empty()) {
-      file = args[i];
-    } else {
-      return usage_error("run takes one SESSION file");
-    }
-  }
-  if (file.empty()) return usage_error("run needs a SESSION file");
-  const CompiledSession session = load_session(file);  // DataError: file:line:col, exit 1
+// Runs a compiled session once: writes the timeline and the trace, prints
+// the verdicts.
+void run_once(const CompiledSession& session, const std::string& out_dir, bool json) {
   const fs::path out = out_dir.empty() ? fs::path("out") / session.name : fs::path(out_dir);
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw std::runtime_error("cannot create " + out.string() + ": " + ec.message());
-
   RunResult result;
   {
     OutFile timeline(out / "timeline.jsonl");
@@ -103,6 +89,91 @@ int run_run(const Args& args) {
   } else {
     print_text(session, result, out);
   }
+  std::cout.flush();
+}
+
+// What a file looked like when last read: a change of either means an edit.
+struct Stamp {
+  fs::file_time_type time{};
+  std::uintmax_t size = 0;
+  bool exists = false;
+  bool operator==(const Stamp&) const = default;
+};
+
+std::vector<Stamp> stamps(const std::vector<std::string>& files) {
+  std::vector<Stamp> out;
+  for (const std::string& f : files) {
+    std::error_code ec;
+    Stamp s;
+    s.time = fs::last_write_time(f, ec);
+    s.exists = !ec;
+    if (s.exists) s.size = fs::file_size(f, ec);
+    out.push_back(s);
+  }
+  return out;
+}
+
+// --watch: re-runs whenever a file the session read changes. A broken edit
+// prints its error and keeps the last good model (run again once the file
+// is fixed). `runs` > 0 stops after that many runs or failed reloads.
+int watch(const std::string& file, const std::string& out_dir, bool json, long runs) {
+  std::optional<CompiledSession> good;
+  std::vector<std::string> files{file};
+  long done = 0;
+  while (true) {
+    // Stamped before reading, so that an edit made while it runs is seen.
+    std::vector<Stamp> before = stamps(files);
+    try {
+      CompiledSession session = load_session(file);
+      if (session.files != files) {
+        files = session.files;
+        before = stamps(files);  // first run, or the session now names other files
+      }
+      run_once(session, out_dir, json);
+      good = std::move(session);
+    } catch (const DataError& e) {
+      std::cout << e.what() << "\n";
+      if (good) std::cout << "keeping the last good model (" << good->name << "); fix the file to run again\n";
+      std::cout.flush();
+    }
+    if (runs > 0 && ++done >= runs) return good ? 0 : 1;
+    std::cout << "watching " << files.size() << " files for changes (Ctrl-C to stop)\n";
+    std::cout.flush();
+    while (stamps(files) == before) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::cout << "changed: re-running\n";
+  }
+}
+
+}  // namespace
+
+int run_run(const Args& args) {
+  std::string file, out_dir;
+  bool json = false, watching = false;
+  long runs = 0;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--json") {
+      json = true;
+    } else if (args[i] == "--watch") {
+      watching = true;
+    } else if (args[i] == "--runs") {
+      if (i + 1 >= args.size()) return usage_error("--runs needs a number");
+      runs = std::atol(args[++i].c_str());
+      if (runs <= 0) return usage_error("--runs needs a number above 0");
+    } else if (args[i] == "--out") {
+      if (i + 1 >= args.size()) return usage_error("--out needs a DIR");
+      out_dir = args[++i];
+    } else if (!args[i].empty() && args[i][0] == '-') {
+      return usage_error("run: unknown option '" + args[i] + "'");
+    } else if (file.empty()) {
+      file = args[i];
+    } else {
+      return usage_error("run takes one SESSION file");
+    }
+  }
+  if (file.empty()) return usage_error("run needs a SESSION file");
+  if (runs > 0 && !watching) return usage_error("--runs goes with --watch");
+  if (watching) return watch(file, out_dir, json, runs);
+  run_once(load_session(file), out_dir, json);  // DataError: file:line:col, exit 1
   return 0;
 }
 
