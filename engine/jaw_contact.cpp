@@ -37,13 +37,21 @@ JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_obje
   }
   // The moving jaw presses the actee onto the fixed jaw; an actee not resting
   // on the fixed arm would be pushed away rather than gripped.
+  // Where each part touches it: asked with the pair half a tolerance apart
+  // (the moving jaw a little open, the actee a little above the fixed
+  // jaw's face), so that the query is a distance, not a collision, and
+  // allocates nothing; the point is the middle of that small gap.
+  const double half = 0.5 * m.contact_tolerance;
+  const double r = std::max(std::abs(actee_in_object.translation().x()), 1e-6);
+  Eigen::Isometry3d lifted = actee_in_object;
+  lifted.translation().y() += half;
   bool on_fixed = false;
   for (size_t i = 0; i < m.parts.size(); ++i) {
     const ModelPart& part = m.parts[i];
-    const Eigen::Isometry3d pose = part_in_object(part, open);
+    const bool moving = part.arm == Arm::moving;
+    const Eigen::Isometry3d pose = part_in_object(part, moving ? open + half / r : open);
     ContactPoint c;
-    // Touching at the contact angle, within the bisection's last step.
-    const bool touching = query.contact(part.geometry, pose, m.actee(), actee_in_object,
+    const bool touching = query.contact(part.geometry, pose, m.actee(), moving ? actee_in_object : lifted,
                                         m.contact_tolerance, &c);
     on_fixed = on_fixed || (touching && part.arm == Arm::fixed);
     if (contacts == nullptr) continue;
