@@ -52,8 +52,7 @@ GraspTypeSpec read_grasp_type(const Node& node, const std::vector<GraspTypeSpec>
   g.kind = read_choice(m.required("kind"), {"power", "precision"}) == "power" ? GraspKind::power
                                                                               : GraspKind::precision;
   g.description = read_string(m.required("description"));
-  const Node force = m.required("max_force");
-  g.max_force = require_positive(force, read_quantity(force, dim::force));
+  g.max_force = read_positive(m.required("max_force"), dim::force);
   const Node fingers_node = m.required("fingers");
   MapReader fingers(fingers_node, "the fingers of " + g.name, {kFingerNames.begin(), kFingerNames.end()});
   // A type that constrains nothing would take every posture, the open hand

@@ -12,14 +12,12 @@ ActeeSpec read_actee(const Node& root) {
   a.name = read_name(m.required("actee"));
   a.description = read_string(m.required("description"));
   a.shape = read_shape(m.required("shape"));
-  const Node mass = m.required("mass");
-  a.mass = require_positive(mass, read_quantity(mass, dim::mass));
+  a.mass = read_positive(m.required("mass"), dim::mass);
   a.force_direction = read_direction(m.required("force_direction"));
   const Node limit = m.required("limit");
   a.limit_loc = limit.loc();
-  a.limit = require_positive(limit, read_quantity(limit, dim::force));
-  const Node k = m.required("stiffness");
-  a.stiffness = require_positive(k, read_quantity(k, dim::stiffness));
+  a.limit = read_positive(limit, dim::force);
+  a.stiffness = read_positive(m.required("stiffness"), dim::stiffness);
   a.breaks = read_bool(m.required("breaks"));
   return a;
 }

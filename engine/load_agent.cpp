@@ -11,8 +11,7 @@ namespace {
 FingerSpec read_finger(const Node& node, const std::string& name) {
   MapReader m(node, "the " + name, {"tip_radius", kJointNames[0], kJointNames[1], kJointNames[2]});
   FingerSpec f;
-  const Node r = m.required("tip_radius");
-  f.tip_radius = require_positive(r, read_quantity(r, dim::length));
+  f.tip_radius = read_positive(m.required("tip_radius"), dim::length);
   for (int j = 0; j < kJoints; ++j) {
     const Node range = m.required(kJointNames[j]);
     if (!range.is_sequence() || range.size() != 2) range.fail("a pair [min, max] of angles");
@@ -32,10 +31,8 @@ AgentSpec read_agent(const Node& root) {
   a.file = root.loc().file;
   a.name = read_name(m.required("agent"));
   a.description = read_string(m.required("description"));
-  const Node gain = m.required("force_gain");
-  a.force_gain = require_positive(gain, read_quantity(gain, dim::stiffness));
-  const Node max_force = m.required("max_force");
-  a.max_force = require_positive(max_force, read_quantity(max_force, dim::force));
+  a.force_gain = read_positive(m.required("force_gain"), dim::stiffness);
+  a.max_force = read_positive(m.required("max_force"), dim::force);
   MapReader fingers(m.required("fingers"), "the fingers", {kFingerNames.begin(), kFingerNames.end()});
   for (int i = 0; i < kFingers; ++i) {
     a.fingers[static_cast<size_t>(i)] = read_finger(fingers.required(kFingerNames[i]), kFingerNames[i]);

@@ -42,20 +42,16 @@ ShapeSpec read_shape(const Node& node) {
       {"radius"}, {"size"}, {"radius", "length"}, {"radius", "length"}, {"radii"}, {"unit", "vertices"}};
   MapReader m(outer.required(kind), "a " + kind, kKeys[index]);
   switch (shape.kind) {
-    case ShapeKind::sphere: {
-      const Node r = m.required("radius");
-      shape.radius = require_positive(r, read_quantity(r, dim::length));
+    case ShapeKind::sphere:
+      shape.radius = read_positive(m.required("radius"), dim::length);
       break;
-    }
     case ShapeKind::box:
       shape.size = read_positive_vector(m.required("size"), dim::length);
       break;
     case ShapeKind::capsule:
     case ShapeKind::cylinder: {
-      const Node r = m.required("radius");
-      shape.radius = require_positive(r, read_quantity(r, dim::length));
-      const Node l = m.required("length");
-      shape.length = require_positive(l, read_quantity(l, dim::length));
+      shape.radius = read_positive(m.required("radius"), dim::length);
+      shape.length = read_positive(m.required("length"), dim::length);
       break;
     }
     case ShapeKind::ellipsoid:

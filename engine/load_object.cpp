@@ -59,8 +59,7 @@ SpringSpec read_spring(const Node& node, const LeverSpec& lever) {
   MapReader m(node, "the spring", {"constant", "position", "rest_length", "preload"});
   SpringSpec spring;
   spring.loc = node.loc();
-  const Node k = m.required("constant");
-  spring.constant = require_positive(k, read_quantity(k, dim::stiffness));
+  spring.constant = read_positive(m.required("constant"), dim::stiffness);
   const Node pos = m.required("position");
   spring.position = read_quantity(pos, dim::length);
   require_on_arm(pos, spring.position, lever.arm);
@@ -73,9 +72,9 @@ SpringSpec read_spring(const Node& node, const LeverSpec& lever) {
   }
   const double gap_at_rest = std::abs(spring.position) * lever.theta_rest;
   if (rest_length) {
-    spring.rest_length = require_positive(*rest_length, read_quantity(*rest_length, dim::length));
+    spring.rest_length = read_positive(*rest_length, dim::length);
   } else {
-    const double force = require_non_negative(*preload, read_quantity(*preload, dim::force));
+    const double force = read_non_negative(*preload, dim::force);
     spring.rest_length = gap_at_rest + force / spring.constant;
   }
   // The untouched tool must be at rest: a compressed spring holds it open
@@ -156,8 +155,7 @@ ObjectSpec read_object(const Node& root) {
   o.file = root.loc().file;
   o.name = read_name(m.required("object"));
   o.description = read_string(m.required("description"));
-  const Node mass = m.required("mass");
-  o.mass = require_positive(mass, read_quantity(mass, dim::mass));
+  o.mass = read_positive(m.required("mass"), dim::mass);
   o.centre_of_gravity = read_vector(m.required("centre_of_gravity"), dim::length);
   {
     MapReader pose(m.required("functional_pose"), "the functional pose", {"position", "rotation"});

@@ -248,7 +248,7 @@ std::shared_ptr<const RuleSet> compile_rules(const Node& root) {
       node.tree = parse_expression(node.text, node.loc, when.yaml().Tag() == "!");
       node.slot = compiler.compile(node);
       if (std::optional<Node> d = nm.optional("for")) {
-        node.min_duration = require_non_negative(*d, read_quantity(*d, dim::time));
+        node.min_duration = read_non_negative(*d, dim::time);
       }
       node.value_offset = fn.value_count;
       fn.value_count += static_cast<int>(node.tree.nodes.size());

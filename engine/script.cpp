@@ -49,7 +49,7 @@ GripSpec read_grip(const Node& node) {
   }
   const Node squeeze = m.required("squeeze");
   g.squeeze_loc = squeeze.loc();
-  g.squeeze = require_non_negative(squeeze, read_quantity(squeeze, dim::length));
+  g.squeeze = read_non_negative(squeeze, dim::length);
   return g;
 }
 

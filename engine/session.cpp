@@ -103,11 +103,11 @@ CompiledSession read_session(const Node& root) {
   options.timestep = kDefaultTimestep;
   options.contact_tolerance = kDefaultContactTolerance;
   if (std::optional<Node> dt = m.optional("timestep")) {
-    options.timestep = require_positive(*dt, read_quantity(*dt, dim::time));
+    options.timestep = read_positive(*dt, dim::time);
     if (options.timestep > kMaxTimestep) dt->fail("a timestep of at most " + format_quantity(kMaxTimestep, dim::time));
   }
   if (std::optional<Node> tol = m.optional("contact_tolerance")) {
-    options.contact_tolerance = require_positive(*tol, read_quantity(*tol, dim::length));
+    options.contact_tolerance = read_positive(*tol, dim::length);
   }
 
   // Parse every file first, then compile (the object before the actee that

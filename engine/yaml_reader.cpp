@@ -208,6 +208,14 @@ double require_positive(const Node& node, double value) {
   return value;
 }
 
+double read_positive(const Node& node, const Dimension& expected) {
+  return require_positive(node, read_quantity(node, expected));
+}
+
+double read_non_negative(const Node& node, const Dimension& expected) {
+  return require_non_negative(node, read_quantity(node, expected));
+}
+
 double require_non_negative(const Node& node, double value) {
   if (!(value >= 0)) node.fail("a value of zero or more");
   return value;

@@ -84,5 +84,8 @@ std::string read_choice(const Node& node, std::initializer_list<const char*> cho
 // Range checks that report at the node's location.
 double require_positive(const Node& node, double value);
 double require_non_negative(const Node& node, double value);
+// A quantity that must be > 0 (or >= 0), SI.
+double read_positive(const Node& node, const Dimension& expected);
+double read_non_negative(const Node& node, const Dimension& expected);
 
 }  // namespace afford

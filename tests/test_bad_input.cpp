@@ -6,6 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -23,6 +25,7 @@ namespace {
 
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
+using test::replace_once;
 
 // objects/nutcracker.yaml. Line numbers are given in the comments.
 const std::string kNutcracker =
@@ -105,16 +108,6 @@ const std::string kHand =
     "    proximal: [0 deg, 100 deg]\n"                                 // 29
     "    metacarpal: [-45 deg, 90 deg]\n";                             // 30
 
-// `text` with its one occurrence of `from` replaced by `to`. A `from` that
-// is missing or not unique fails the test: the mutation would be unclear.
-std::string replace_once(const std::string& text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  if (at == std::string::npos || text.find(from, at + 1) != std::string::npos) {
-    ADD_FAILURE() << "'" << from << "' is not in the document exactly once";
-    return text;
-  }
-  return text.substr(0, at) + to + text.substr(at + from.size());
-}
 
 // The message of the DataError that `run` throws; fails the test when it
 // throws nothing or anything else.

@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -44,14 +46,6 @@ const std::string kTwoTypes =
     "    fingers:\n"                             // 15
     "      thumb: {distal: [40 deg, 80 deg]}\n";  // 16
 
-std::string replace_once(const std::string& text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  if (at == std::string::npos || text.find(from, at + 1) != std::string::npos) {
-    ADD_FAILURE() << "'" << from << "' is not in the document exactly once";
-    return text;
-  }
-  return text.substr(0, at) + to + text.substr(at + from.size());
-}
 
 std::string grasps_error(const std::string& text) {
   try {
