@@ -21,6 +21,7 @@ int run_check(const Args& args);
 int run_describe(const Args& args);
 int run_run(const Args& args);
 int run_rules(const Args& args);
+int run_test(const Args& args);
 
 // Prints "afford: <message>" to stderr and returns the exit status 2.
 int usage_error(const std::string& message);

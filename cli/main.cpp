@@ -18,6 +18,8 @@ const std::vector<Command>& commands() {
        run_rules},
       {"run", "run SESSION [--json] [--out DIR] [--watch [--runs N]]",
        "simulate a session: inferred functions and why, timeline and trace files", run_run},
+      {"test", "test [DIR] [--coverage]",
+       "run the rule test cases under DIR (default tests/rules): PASS/FAIL each, nodes reached", run_test},
   };
   return kCommands;
 }

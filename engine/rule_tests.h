@@ -75,8 +75,12 @@ struct RuleCase {
   std::string name;  // `test:`
   std::string note;
   SourceLoc loc;     // the `test:` value
-  Node root;         // the case's document (the session's nodes live in it)
+  // `session:`: a path (a scalar) or the session's keys (a mapping); always
+  // set by read_rule_case.
+  std::optional<Node> session;
+  SourceLoc session_key;      // the key `session` itself (a missing file is reported there)
   std::optional<Node> rules;  // `rules:` (a path), if the case overrides the session's
+  SourceLoc rules_key;
   std::vector<CaseExpectation> expect;
   std::vector<CaseRejection> reject;
   std::optional<std::string> error;  // `error:`: the files must fail to load with this text

@@ -8,7 +8,7 @@ packages=(
   build-essential cmake pkg-config ninja-build
   libeigen3-dev libfcl-dev libccd-dev libyaml-cpp-dev
   libglm-dev libosmesa6-dev libusb-1.0-0-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev
 )
 missing=()
 for p in "${packages[@]}"; do

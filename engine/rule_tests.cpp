@@ -1,0 +1,625 @@
+// Rule test cases: read, load, run with a progress observer, judge (see
+// rule_tests.h).
+#include "rule_tests.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <unistd.h>
+
+#include "did_you_mean.h"
+#include "load.h"
+#include "rules_impl.h"
+#include "run.h"
+#include "units.h"
+
+namespace afford {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kCaseKeys = {"test", "note", "session", "rules", "expect", "reject", "error"};
+const std::vector<std::string> kSessionKeys = {"session", "description", "object", "actee", "agent", "rules",
+                                               "grasps", "timestep", "contact_tolerance", "script"};
+
+// The node of `key` itself in a mapping (a missing file is reported there).
+Node key_node(const Node& map, std::string_view key) {
+  for (auto it = map.yaml().begin(); it != map.yaml().end(); ++it) {
+    if (it->first.Scalar() == key) return map.child(it->first);
+  }
+  return map;
+}
+
+std::string seconds(double t) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f s", t);
+  return buf;
+}
+
+std::string window_text(const TimeWindow& w) {
+  return "[" + format_quantity(w.from, dim::time) + ", " + format_quantity(w.to, dim::time) + "]";
+}
+
+// ------------------------------------------------------------ reading
+
+TimeWindow read_window(const Node& node) {
+  if (!node.is_sequence() || node.size() != 2) node.fail("a window [from, to] of two times");
+  TimeWindow w;
+  w.from = read_quantity(node[0], dim::time);
+  w.to = read_quantity(node[1], dim::time);
+  if (w.from < 0) node[0].fail("a time of 0 s or more");
+  if (w.to < w.from) node[1].fail("a time not before " + format_quantity(w.from, dim::time));
+  return w;
+}
+
+Node non_empty_sequence(const Node& node, const std::string& what) {
+  if (!node.is_sequence() || node.size() == 0) node.fail("a sequence of " + what);
+  return node;
+}
+
+void read_expect(const Node& list, std::vector<CaseExpectation>* out) {
+  non_empty_sequence(list, "functions expected: a name, or {function, within, times}");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const Node item = list[i];
+    CaseExpectation e;
+    if (item.is_scalar()) {
+      e.function = read_name(item);
+      e.loc = item.loc();
+    } else {
+      MapReader m(item, "an expected function", {"function", "within", "times"});
+      const Node name = m.required("function");
+      e.function = read_name(name);
+      e.loc = name.loc();
+      if (std::optional<Node> w = m.optional("within")) e.within = read_window(*w);
+      if (std::optional<Node> n = m.optional("times")) {
+        e.times = read_int(*n);
+        if (e.times < 0) n->fail("a count of 0 or more");
+      }
+    }
+    out->push_back(std::move(e));
+  }
+}
+
+void read_reject(const Node& list, std::vector<CaseRejection>* out) {
+  non_empty_sequence(list, "functions rejected: a name, or {function, within}");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const Node item = list[i];
+    CaseRejection r;
+    if (item.is_scalar()) {
+      r.function = read_name(item);
+      r.loc = item.loc();
+    } else {
+      MapReader m(item, "a rejected function", {"function", "within"});
+      const Node name = m.required("function");
+      r.function = read_name(name);
+      r.loc = name.loc();
+      if (std::optional<Node> w = m.optional("within")) r.within = read_window(*w);
+    }
+    out->push_back(std::move(r));
+  }
+}
+
+// A session given in place: its keys checked here, where a missing one can
+// still be reported at the mapping (read_session sees a copy, below).
+void check_inline_session(const Node& node, bool case_has_rules) {
+  MapReader m(node, "the session in place", kSessionKeys);
+  for (const char* key : {"object", "agent", "grasps", "script"}) m.required(key);
+  if (!m.has("rules") && !case_has_rules) {
+    node.fail("key 'rules' in the session in place (or in the case)", "no such key");
+  }
+  // read_session reads the values; `session` and `description` too, when given.
+  if (std::optional<Node> name = m.optional("session")) read_name(*name);
+  if (std::optional<Node> d = m.optional("description")) read_string(*d);
+}
+
+// The path a case's key names, relative to the case's folder, checked to
+// be a readable file (reported at the key).
+std::string resolve(const RuleCase& c, const SourceLoc& key, const Node& value) {
+  const std::string given = read_string(value);
+  if (given.empty()) value.fail("a path to a file");
+  fs::path p(given);
+  if (p.is_relative()) p = fs::path(c.file).parent_path() / p;
+  const std::string path = p.lexically_normal().string();
+  const std::string expected =
+      "a readable file '" + given + "'" + (fs::path(given).is_relative() ? " (relative to the case's folder)" : "");
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) fail(key, expected, "a directory");
+  if (!fs::is_regular_file(path, ec) || ::access(path.c_str(), R_OK) != 0) fail(key, expected, "none");
+  return path;
+}
+
+// The session in place as a session document: `session` first (the
+// case's name if not given), `description` (the note, or the name), the
+// case's `rules` if the session has none, then the session's own keys.
+// The values, and the keys given, are the case file's own nodes, so that
+// read_session reports a mistake at its place in the case file.
+Node inline_session_document(const RuleCase& c) {
+  const Node& given = *c.session;
+  const YAML::Node& in = given.yaml();
+  YAML::Node doc(YAML::NodeType::Map);
+  auto copy = [&](const std::string& key) {
+    for (auto it = in.begin(); it != in.end(); ++it) {
+      if (it->first.Scalar() == key) doc.force_insert(it->first, it->second);
+    }
+  };
+  auto has = [&](const std::string& key) {
+    for (auto it = in.begin(); it != in.end(); ++it) {
+      if (it->first.Scalar() == key) return true;
+    }
+    return false;
+  };
+  if (has("session")) {
+    copy("session");
+  } else {
+    doc.force_insert(YAML::Node("session"), YAML::Node(c.name));
+  }
+  if (has("description")) {
+    copy("description");
+  } else {
+    doc.force_insert(YAML::Node("description"), YAML::Node(c.note.empty() ? c.name : c.note));
+  }
+  if (!has("rules") && c.rules) doc.force_insert(YAML::Node("rules"), c.rules->yaml());
+  for (auto it = in.begin(); it != in.end(); ++it) {
+    const std::string& key = it->first.Scalar();
+    if (key != "session" && key != "description") doc.force_insert(it->first, it->second);
+  }
+  return given.child(doc);
+}
+
+// ------------------------------------------------------------ the progress observer
+
+bool is_comparison(const std::string& op) {
+  return op == "<" || op == "<=" || op == ">" || op == ">=" || op == "==" || op == "!=";
+}
+
+// How close a node's condition came to holding this frame (larger is
+// closer): for a comparison its margin, otherwise how many of its
+// sub-conditions hold.
+double closeness(const RuleNode& node, const std::vector<double>& value) {
+  const ExprNode& root = node.tree.nodes[static_cast<size_t>(node.tree.root)];
+  auto v = [&](int tree_index) {
+    return value[static_cast<size_t>(node.tree_slot[static_cast<size_t>(tree_index)])];
+  };
+  if (root.kind == ExprKind::binary && is_comparison(root.op)) {
+    const double a = v(root.children[0]), b = v(root.children[1]);
+    if (root.op == ">" || root.op == ">=") return a - b;
+    if (root.op == "<" || root.op == "<=") return b - a;
+    if (root.op == "==") return -std::abs(a - b);
+    return std::abs(a - b);
+  }
+  double held = 0;
+  for (size_t i = 0; i < node.tree.nodes.size(); ++i) {
+    if (node.tree_boolean[i] && v(static_cast<int>(i)) != 0) held += 1;
+  }
+  return held;
+}
+
+std::string format_value(double v, bool boolean, const Dimension& d) {
+  if (boolean) return v != 0 ? "true" : "false";
+  if (d == dim::none) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+  }
+  return format_quantity(v, d);
+}
+
+// A node's condition written out with values (as rules_explain.cpp does
+// for inferences): a literal as written, a condition that held as its
+// text, anything else "text = value".
+class ValueWriter {
+ public:
+  ValueWriter(const RuleNode& node, const double* values) : node_(node), values_(values) {}
+
+  std::string write(int index) const {
+    const ExprNode& e = node_.tree.nodes[static_cast<size_t>(index)];
+    if (e.kind == ExprKind::binary && (e.op == "and" || e.op == "or")) {
+      return write(e.children[0]) + " " + e.op + " " + write(e.children[1]);
+    }
+    if (e.kind == ExprKind::binary && is_comparison(e.op)) {
+      return operand(e.children[0]) + " " + e.op + " " + operand(e.children[1]);
+    }
+    if (e.kind == ExprKind::unary && e.op == "not") return "not (" + write(e.children[0]) + ")";
+    return operand(index);
+  }
+
+ private:
+  std::string operand(int index) const {
+    const ExprNode& e = node_.tree.nodes[static_cast<size_t>(index)];
+    if (e.kind == ExprKind::number || e.kind == ExprKind::boolean) return e.text;
+    const size_t i = static_cast<size_t>(index);
+    if (node_.tree_boolean[i] && values_[i] != 0) return e.text;
+    return e.text + " = " + format_value(values_[i], node_.tree_boolean[i], node_.tree_dimension[i]);
+  }
+
+  const RuleNode& node_;
+  const double* values_;
+};
+
+// Watches a run: per function, the furthest its trace got, and for the node
+// it stopped before, the values at the frame it came closest and its
+// longest hold. Allocates only in on_start and on_end.
+class ProgressObserver : public Observer {
+ public:
+  void on_start(const Model&, const State&, const RuleSet& rules) override {
+    track_.assign(rules.functions.size(), Track{});
+    for (size_t f = 0; f < rules.functions.size(); ++f) {
+      size_t most = 0;
+      for (const RuleNode& node : rules.functions[f].nodes) most = std::max(most, node.tree.nodes.size());
+      track_[f].values.assign(most, 0.0);
+    }
+  }
+
+  void on_frame(const Model&, const State& state, const RuleSet& rules, const RuleState& rs) override {
+    const double t = state.t;
+    for (size_t f = 0; f < rules.functions.size(); ++f) {
+      const RuleFunction& fn = rules.functions[f];
+      Track& tr = track_[f];
+      const int stage = rs.trace[f].stage;
+      if (stage > tr.furthest) {
+        tr.furthest = stage;
+        tr.furthest_t = t;
+        tr.has_values = false;
+        tr.longest_hold = 0;
+      }
+      if (stage != tr.furthest || stage >= static_cast<int>(fn.nodes.size())) continue;
+      const RuleNode& node = fn.nodes[static_cast<size_t>(stage)];
+      if (node.required >= 0) continue;
+      const size_t flat = static_cast<size_t>(rs.node_base[f] + stage);
+      if (rs.holds[flat]) tr.longest_hold = std::max(tr.longest_hold, t - rs.true_since[flat]);
+      const double score = closeness(node, rs.value);
+      if (!tr.has_values || score > tr.score) {
+        for (size_t k = 0; k < node.tree_slot.size(); ++k) {
+          tr.values[k] = rs.value[static_cast<size_t>(node.tree_slot[k])];
+        }
+        tr.score = score;
+        tr.values_t = t;
+        tr.has_values = true;
+      }
+    }
+  }
+
+  void on_end(const Model&, const State&, const RuleSet& rules, const RuleState& rs) override {
+    progress_.clear();
+    for (size_t f = 0; f < rules.functions.size(); ++f) {
+      const RuleFunction& fn = rules.functions[f];
+      const Track& tr = track_[f];
+      FunctionProgress p;
+      p.function = fn.name;
+      p.nodes = static_cast<int>(fn.nodes.size());
+      p.furthest = tr.furthest;
+      p.furthest_t = tr.furthest_t;
+      if (tr.furthest < p.nodes) p.stopped_at = stopped_at(rules, fn, tr);
+      progress_.push_back(std::move(p));
+    }
+    coverage_.file = rules.file;
+    coverage_.functions.clear();
+    std::vector<size_t> order(rules.functions.size());
+    for (size_t f = 0; f < order.size(); ++f) order[f] = f;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      const SourceLoc& la = rules.functions[a].loc;
+      const SourceLoc& lb = rules.functions[b].loc;
+      return la.line != lb.line ? la.line < lb.line : la.column < lb.column;
+    });
+    for (size_t f : order) {
+      const RuleFunction& fn = rules.functions[f];
+      FunctionCoverage fc;
+      fc.name = fn.name;
+      for (size_t i = 0; i < fn.nodes.size(); ++i) {
+        fc.nodes.push_back({fn.nodes[i].text, fn.nodes[i].loc, node_ever_reached(rs, static_cast<int>(f), static_cast<int>(i))});
+      }
+      coverage_.functions.push_back(std::move(fc));
+    }
+  }
+
+  std::vector<FunctionProgress> progress() const { return progress_; }
+  const RulesCoverage& coverage() const { return coverage_; }
+
+ private:
+  struct Track {
+    int furthest = 0;
+    double furthest_t = 0;
+    bool has_values = false;
+    double score = 0;
+    double values_t = 0;
+    double longest_hold = 0;  // s
+    std::vector<double> values;  // per tree node of the node stopped before, at values_t
+  };
+
+  static std::string stopped_at(const RuleSet& rules, const RuleFunction& fn, const Track& tr) {
+    const RuleNode& node = fn.nodes[static_cast<size_t>(tr.furthest)];
+    std::string s = "'" + node.text + "' (" + node.loc.str() + ")";
+    if (node.required >= 0) {
+      return s + ": " + rules.functions[static_cast<size_t>(node.required)].name + " was never inferred";
+    }
+    if (node.min_duration > 0 && tr.longest_hold > 0) {
+      s += ": true for at most " + seconds(tr.longest_hold) + " of the " +
+           format_quantity(node.min_duration, dim::time) + " it needs";
+    } else {
+      s += ": never true";
+    }
+    if (tr.has_values) {
+      s += "; closest at " + seconds(tr.values_t) + ": " + ValueWriter(node, tr.values.data()).write(node.tree.root);
+    }
+    return s;
+  }
+
+  std::vector<Track> track_;
+  std::vector<FunctionProgress> progress_;
+  RulesCoverage coverage_;
+};
+
+// ------------------------------------------------------------ judging
+
+std::string explain(const Inference& inf) {
+  std::string s;
+  for (const NodeExplanation& n : inf.nodes) s += (s.empty() ? "" : ", ") + n.text + " at " + seconds(n.t);
+  return s;
+}
+
+bool in_window(double t, const std::optional<TimeWindow>& w) {
+  return !w || (t >= w->from - 1e-9 && t <= w->to + 1e-9);
+}
+
+// How far an inference lies from a window (0 inside it).
+double distance(double t, const std::optional<TimeWindow>& w) {
+  if (!w) return 0;
+  return t < w->from ? w->from - t : (t > w->to ? t - w->to : 0.0);
+}
+
+std::string progress_text(const FunctionProgress& p) {
+  std::string s;
+  if (p.furthest == 0) {
+    s = "its trace reached none of its " + std::to_string(p.nodes) + " nodes";
+  } else {
+    s = "its trace reached " + std::to_string(p.furthest) + " of its " + std::to_string(p.nodes) + " nodes (by " +
+        seconds(p.furthest_t) + ")";
+  }
+  return s + ", then stopped at " + p.stopped_at;
+}
+
+// "pinch at 1.181 s, 3.100 s; nearest at 1.181 s because ..." (all not empty).
+std::string inferred_text(const std::string& function, const std::vector<const Inference*>& all,
+                          const std::optional<TimeWindow>& window) {
+  std::string s = function + " at ";
+  const Inference* nearest = all.front();
+  for (size_t i = 0; i < all.size(); ++i) {
+    s += (i ? ", " : "") + seconds(all[i]->t);
+    if (distance(all[i]->t, window) < distance(nearest->t, window)) nearest = all[i];
+  }
+  return s + (all.size() > 1 ? "; nearest at " + seconds(nearest->t) : std::string()) + " because " + explain(*nearest);
+}
+
+std::string times_text(int n) { return n == 1 ? "once" : (n == 2 ? "twice" : std::to_string(n) + " times"); }
+
+}  // namespace
+
+// ------------------------------------------------------------ reading
+
+RuleCase read_rule_case(const Node& root) {
+  const std::string kind = file_kind(root);
+  if (kind != "test") {
+    root.child(root.yaml().begin()->first).fail("a rule test case (its first key 'test')", "'" + kind + "'");
+  }
+  MapReader m(root, "a rule test case", kCaseKeys);
+  RuleCase c;
+  c.file = root.loc().file;
+  const Node name = m.required("test");
+  c.name = read_name(name);
+  c.loc = name.loc();
+  if (std::optional<Node> note = m.optional("note")) c.note = read_string(*note);
+  c.session = m.required("session");
+  c.session_key = key_node(root, "session").loc();
+  if (std::optional<Node> rules = m.optional("rules")) {
+    if (!rules->is_scalar()) rules->fail("a path to a function-model file");
+    c.rules = *rules;
+    c.rules_key = key_node(root, "rules").loc();
+  }
+  if (c.session->is_map()) {
+    check_inline_session(*c.session, c.rules.has_value());
+  } else if (!c.session->is_scalar()) {
+    c.session->fail("a path to a session file, or the session's keys as a mapping");
+  }
+  if (std::optional<Node> e = m.optional("expect")) read_expect(*e, &c.expect);
+  if (std::optional<Node> r = m.optional("reject")) read_reject(*r, &c.reject);
+  if (std::optional<Node> e = m.optional("error")) {
+    if (m.has("expect") || m.has("reject")) {
+      key_node(root, "error").fail("either 'error' (the files must fail to load) or 'expect' and 'reject'", "both");
+    }
+    c.error = read_string(*e);
+    if (c.error->empty()) e->fail("a text that the error message must contain");
+  }
+  if (!m.has("expect") && !m.has("reject") && !m.has("error")) {
+    root.fail("key 'expect', 'reject' or 'error' in a rule test case", "none of them");
+  }
+  return c;
+}
+
+RuleCase load_rule_case(const std::string& path) { return read_rule_case(load_yaml_file(path)); }
+
+CompiledSession compile_rule_case(const RuleCase& c) {
+  if (!c.session) throw LogicError("compile_rule_case: a case without its session");
+  CompiledSession session;
+  bool rules_inserted = false;
+  if (c.session->is_scalar()) {
+    session = load_session(resolve(c, c.session_key, *c.session));
+  } else {
+    rules_inserted = c.rules && !MapReader(*c.session, "the session in place", kSessionKeys).has("rules");
+    session = read_session(inline_session_document(c));
+  }
+  if (c.rules && !rules_inserted) {
+    const std::string path = resolve(c, c.rules_key, *c.rules);
+    session.rules = load_rules(path);
+    session.files.push_back(path);
+  }
+  return session;
+}
+
+// ------------------------------------------------------------ running
+
+CaseRun run_case_session(const CompiledSession& session, const AgentFactory& agent) {
+  std::unique_ptr<SampleSource> source = agent(session.script);
+  if (!source) throw LogicError("run_case_session: the agent factory gave no source");
+  ProgressObserver progress;
+  Observer* const observers[] = {&progress};
+  RunResult result = run_session(session.model, *session.rules, *source, observers);
+  CaseRun run;
+  run.inferences = std::move(result.inferences);
+  run.progress = progress.progress();
+  run.coverage = progress.coverage();
+  run.end_time = result.end_time;
+  return run;
+}
+
+std::vector<std::string> judge_rule_case(const RuleCase& c, const CaseRun& run) {
+  std::vector<std::string> names;
+  for (const FunctionProgress& p : run.progress) names.push_back(p.function);
+  auto find = [&](const std::string& function, const SourceLoc& loc, std::string* unknown) -> const FunctionProgress* {
+    for (const FunctionProgress& p : run.progress) {
+      if (p.function == function) return &p;
+    }
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    *unknown = loc.str() + ": expected a function of " + (run.coverage.file.empty() ? "the rules" : run.coverage.file) +
+               " (" + list + "), found '" + function + "'" + did_you_mean(function, names);
+    return nullptr;
+  };
+  auto inferred = [&](const std::string& function) {
+    std::vector<const Inference*> out;
+    for (const Inference& inf : run.inferences) {
+      if (inf.function == function) out.push_back(&inf);
+    }
+    return out;
+  };
+
+  std::vector<std::string> failures;
+  for (const CaseExpectation& e : c.expect) {
+    std::string unknown;
+    const FunctionProgress* p = find(e.function, e.loc, &unknown);
+    if (p == nullptr) {
+      failures.push_back(unknown);
+      continue;
+    }
+    const std::vector<const Inference*> all = inferred(e.function);
+    const auto count = std::count_if(all.begin(), all.end(), [&](const Inference* i) { return in_window(i->t, e.within); });
+    const bool ok = e.times < 0 ? count > 0 : count == e.times;
+    if (ok) continue;
+    std::string want = "expected " + e.function;
+    if (e.times >= 0) want += " " + times_text(e.times);
+    if (e.within) want += " within " + window_text(*e.within);
+    std::string got;
+    if (all.empty()) {
+      got = "got none: " + progress_text(*p);
+    } else if (e.times >= 0) {
+      got = "got it " + (count == 0 ? std::string("no time") : times_text(static_cast<int>(count))) +
+            (e.within ? " there" : "") + ": " + inferred_text(e.function, all, e.within);
+    } else {
+      got = "got " + inferred_text(e.function, all, e.within);
+    }
+    failures.push_back(want + ", " + got);
+  }
+  for (const CaseRejection& r : c.reject) {
+    std::string unknown;
+    if (find(r.function, r.loc, &unknown) == nullptr) {
+      failures.push_back(unknown);
+      continue;
+    }
+    std::vector<const Inference*> hits;
+    for (const Inference* i : inferred(r.function)) {
+      if (in_window(i->t, r.within)) hits.push_back(i);
+    }
+    if (hits.empty()) continue;
+    std::string s = "expected no " + r.function + (r.within ? " within " + window_text(*r.within) : "") + ", got " +
+                    r.function + " at ";
+    for (size_t i = 0; i < hits.size(); ++i) s += (i ? ", " : "") + seconds(hits[i]->t);
+    failures.push_back(s + " because " + explain(*hits.front()));
+  }
+  return failures;
+}
+
+std::string RuleCaseResult::reason() const {
+  std::string s;
+  for (const std::string& f : failures) s += (s.empty() ? "" : "; ") + f;
+  return s;
+}
+
+RuleCaseResult run_rule_case(const RuleCase& c, const AgentFactory& agent) {
+  RuleCaseResult r;
+  r.file = c.file;
+  r.name = c.name;
+  std::optional<CompiledSession> session;
+  try {
+    session.emplace(compile_rule_case(c));
+  } catch (const DataError& e) {
+    const std::string message = e.what();
+    if (!c.error) {
+      r.failures.push_back("the files did not load: " + message);
+    } else if (message.find(*c.error) == std::string::npos) {
+      r.failures.push_back("expected the files to fail to load with \"" + *c.error + "\", got: " + message);
+    }
+    r.passed = r.failures.empty();
+    return r;
+  }
+  if (c.error) {
+    r.failures.push_back("expected the files to fail to load with \"" + *c.error + "\", but they loaded");
+    return r;
+  }
+  CaseRun run = run_case_session(*session, agent);
+  r.failures = judge_rule_case(c, run);
+  r.coverage = std::move(run.coverage);
+  r.simulated = run.end_time;
+  r.passed = r.failures.empty();
+  return r;
+}
+
+RuleCaseResult run_rule_case(const std::string& path, const AgentFactory& agent) {
+  RuleCase c;
+  try {
+    c = load_rule_case(path);
+  } catch (const DataError& e) {
+    RuleCaseResult r;
+    r.file = path;
+    r.name = fs::path(path).stem().string();
+    r.failures.push_back(e.what());
+    return r;
+  }
+  return run_rule_case(c, agent);
+}
+
+void merge_coverage(std::vector<RulesCoverage>* total, const RulesCoverage& run) {
+  auto key = [](const std::string& file) {
+    std::error_code ec;
+    const fs::path p = fs::weakly_canonical(file, ec);
+    return ec ? fs::path(file).lexically_normal().string() : p.string();
+  };
+  const std::string k = key(run.file);
+  RulesCoverage* into = nullptr;
+  for (RulesCoverage& t : *total) {
+    if (key(t.file) == k) into = &t;
+  }
+  if (into == nullptr) {
+    total->push_back(run);
+    return;
+  }
+  for (const FunctionCoverage& f : run.functions) {
+    FunctionCoverage* g = nullptr;
+    for (FunctionCoverage& h : into->functions) {
+      if (h.name == f.name) g = &h;
+    }
+    if (g == nullptr) {
+      into->functions.push_back(f);
+      continue;
+    }
+    for (size_t i = 0; i < f.nodes.size(); ++i) {
+      if (i < g->nodes.size()) {
+        g->nodes[i].reached = g->nodes[i].reached || f.nodes[i].reached;
+      } else {
+        g->nodes.push_back(f.nodes[i]);
+      }
+    }
+  }
+}
+
+}  // namespace afford
