@@ -169,14 +169,22 @@ void order_by_requirement(RuleSet& rules, const std::vector<std::vector<int>>& r
   std::vector<int> state(n, 0);  // 0 new, 1 visiting, 2 done
   std::vector<int> order;
   std::vector<int> mapping(n);
+  std::vector<int> path;  // the functions being visited, outermost first
   auto visit = [&](auto&& self, int f) -> void {
     if (state[static_cast<size_t>(f)] == 2) return;
     if (state[static_cast<size_t>(f)] == 1) {
+      // The circle: from f's place on the path back round to f.
+      std::string circle;
+      for (size_t i = 0; i < path.size(); ++i) {
+        if (!circle.empty() || path[i] == f) circle += rules.functions[static_cast<size_t>(path[i])].name + " requires ";
+      }
       const RuleFunction& fn = rules.functions[static_cast<size_t>(f)];
-      fail(fn.loc, "functions that do not require each other in a circle", "'" + fn.name + "' requiring itself");
+      fail(fn.loc, "functions that do not require each other in a circle", circle + fn.name);
     }
     state[static_cast<size_t>(f)] = 1;
+    path.push_back(f);
     for (int r : required[static_cast<size_t>(f)]) self(self, r);
+    path.pop_back();
     state[static_cast<size_t>(f)] = 2;
     order.push_back(f);
   };

@@ -116,7 +116,8 @@ TEST(RuleFile, CircularRequirementsAreAnError) {
       "functions:\n"
       "  - {name: a, description: d, requires: [b], nodes: [{when: held(actee)}]}\n"
       "  - {name: b, description: d, requires: [a], nodes: [{when: held(actee)}]}\n";
-  EXPECT_THAT(rules_error(yaml), HasSubstr("expected functions that do not require each other in a circle"));
+  EXPECT_THAT(rules_error(yaml), HasSubstr("rules.yaml:2:5: expected functions that do not require each other in a "
+                                           "circle, found a requires b requires a"));
 }
 
 TEST(RuleProgram, ASubExpressionSharedByFunctionsHasOneSlot) {
