@@ -170,10 +170,6 @@ Node inline_session_document(const RuleCase& c) {
 
 // ------------------------------------------------------------ the progress observer
 
-bool is_comparison(const std::string& op) {
-  return op == "<" || op == "<=" || op == ">" || op == ">=" || op == "==" || op == "!=";
-}
-
 // How close a node's condition came to holding this frame (larger is
 // closer): for a comparison its margin, otherwise how many of its
 // sub-conditions hold.
@@ -195,48 +191,6 @@ double closeness(const RuleNode& node, const std::vector<double>& value) {
   }
   return held;
 }
-
-std::string format_value(double v, bool boolean, const Dimension& d) {
-  if (boolean) return v != 0 ? "true" : "false";
-  if (d == dim::none) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
-  }
-  return format_quantity(v, d);
-}
-
-// A node's condition written out with values (as rules_explain.cpp does
-// for inferences): a literal as written, a condition that held as its
-// text, anything else "text = value".
-class ValueWriter {
- public:
-  ValueWriter(const RuleNode& node, const double* values) : node_(node), values_(values) {}
-
-  std::string write(int index) const {
-    const ExprNode& e = node_.tree.nodes[static_cast<size_t>(index)];
-    if (e.kind == ExprKind::binary && (e.op == "and" || e.op == "or")) {
-      return write(e.children[0]) + " " + e.op + " " + write(e.children[1]);
-    }
-    if (e.kind == ExprKind::binary && is_comparison(e.op)) {
-      return operand(e.children[0]) + " " + e.op + " " + operand(e.children[1]);
-    }
-    if (e.kind == ExprKind::unary && e.op == "not") return "not (" + write(e.children[0]) + ")";
-    return operand(index);
-  }
-
- private:
-  std::string operand(int index) const {
-    const ExprNode& e = node_.tree.nodes[static_cast<size_t>(index)];
-    if (e.kind == ExprKind::number || e.kind == ExprKind::boolean) return e.text;
-    const size_t i = static_cast<size_t>(index);
-    if (node_.tree_boolean[i] && values_[i] != 0) return e.text;
-    return e.text + " = " + format_value(values_[i], node_.tree_boolean[i], node_.tree_dimension[i]);
-  }
-
-  const RuleNode& node_;
-  const double* values_;
-};
 
 // Watches a run: per function, the furthest its trace got, and for the node
 // it stopped before, the values at the frame it came closest and its
@@ -341,7 +295,7 @@ class ProgressObserver : public Observer {
       s += ": never true";
     }
     if (tr.has_values) {
-      s += "; closest at " + seconds(tr.values_t) + ": " + ValueWriter(node, tr.values.data()).write(node.tree.root);
+      s += "; closest at " + seconds(tr.values_t) + ": " + explain_node(node, tr.values.data());
     }
     return s;
   }

@@ -34,10 +34,6 @@ class Writer {
   }
 
  private:
-  static bool is_comparison(const std::string& op) {
-    return op == "<" || op == "<=" || op == ">" || op == ">=" || op == "==" || op == "!=";
-  }
-
   // A literal reads as written; anything else gets its value.
   std::string operand(int index) const {
     const ExprNode& e = node_.tree.nodes[static_cast<size_t>(index)];
@@ -54,6 +50,14 @@ class Writer {
 
 }  // namespace
 
+bool is_comparison(const std::string& op) {
+  return op == "<" || op == "<=" || op == ">" || op == ">=" || op == "==" || op == "!=";
+}
+
+std::string explain_node(const RuleNode& node, const double* tree_values) {
+  return Writer(node, tree_values).write(node.tree.root);
+}
+
 std::vector<Inference> inferences(const RuleSet& rules, const RuleState& rs) {
   std::vector<Inference> out;
   for (const RuleState::Record& r : rs.log) {
@@ -68,7 +72,7 @@ std::vector<Inference> inferences(const RuleSet& rules, const RuleState& rs) {
       if (node.required >= 0) {
         text = node.text;
       } else {
-        text = Writer(node, rs.log_values.data() + r.values_at + node.value_offset).write(node.tree.root);
+        text = explain_node(node, rs.log_values.data() + r.values_at + node.value_offset);
       }
       if (node.min_duration > 0) text += " (held for " + format_quantity(node.min_duration, dim::time) + ")";
       inf.nodes.push_back({text, t});

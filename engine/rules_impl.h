@@ -87,4 +87,11 @@ struct RuleState {
 
 inline constexpr size_t kMaxRecordedInferences = 4096;
 
+// A node's condition written out with the values of its tree (one per tree
+// node, in tree order): "load(actee) = 312 N > limit(actee) = 300 N".
+std::string explain_node(const RuleNode& node, const double* tree_values);
+
+// True for < <= > >= == !=.
+bool is_comparison(const std::string& op);
+
 }  // namespace afford
