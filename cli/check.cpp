@@ -3,12 +3,20 @@
 
 #include "commands.h"
 #include "errors.h"
+#include "device_description.h"
 #include "validate.h"
 
 namespace afford::cli {
 
+namespace {
+
+std::string check_device(const Node& root) { return "device " + read_device_description(root).name; }
+
+}  // namespace
+
 int run_check(const Args& args) {
   if (args.empty()) return usage_error("check needs at least one FILE");
+  add_file_kind("device", check_device);  // device descriptions live in devices/
   int errors = 0;
   for (const std::string& path : args) {
     try {

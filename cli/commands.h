@@ -19,7 +19,11 @@ const std::vector<Command>& commands();
 
 int run_check(const Args& args);
 int run_describe(const Args& args);
+int run_guide(const Args& args);
+int run_live(const Args& args);
 int run_run(const Args& args);
+int run_replay(const Args& args);
+int run_render(const Args& args);
 int run_rules(const Args& args);
 int run_test(const Args& args);
 

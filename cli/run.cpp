@@ -1,8 +1,9 @@
-// afford run SESSION [--json] [--out DIR] [--watch [--runs N]]: simulates a
-// session file, prints each inferred function with its time and
+// afford run SESSION [--json] [--out DIR] [--watch [--runs N]] [--record FILE]:
+// simulates a session file, prints each inferred function with its time and
 // explanation, and writes the timeline (DIR/timeline.jsonl) and the trace
 // (DIR/trace.csv); DIR defaults to out/<session name>. With --watch it runs
-// again whenever a file the session uses changes.
+// again whenever a file the session uses changes. --record FILE also writes
+// a recording (devices/recording.h) for `afford replay`.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +13,7 @@
 #include <thread>
 
 #include "commands.h"
+#include "recording.h"
 #include "run.h"
 #include "scripted_agent.h"
 #include "session.h"
@@ -69,25 +71,32 @@ void print_json(const CompiledSession& s, const RunResult& r) {
 
 // Runs a compiled session once: writes the timeline and the trace, prints
 // the verdicts.
-void run_once(const CompiledSession& session, const std::string& out_dir, bool json) {
+void run_once(const CompiledSession& session, const std::string& out_dir, bool json,
+              const std::string& record = {}) {
   const fs::path out = out_dir.empty() ? fs::path("out") / session.name : fs::path(out_dir);
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw std::runtime_error("cannot create " + out.string() + ": " + ec.message());
   RunResult result;
+  std::int64_t recorded = -1;
   {
     OutFile timeline(out / "timeline.jsonl");
     OutFile trace(out / "trace.csv");
     TimelineWriter timeline_writer(timeline.file);
     TraceWriter trace_writer(trace.file);
-    Observer* const observers[] = {&timeline_writer, &trace_writer};
+    std::vector<Observer*> observers = {&timeline_writer, &trace_writer};
+    std::optional<Recorder> recorder;
+    if (!record.empty()) observers.push_back(&recorder.emplace(record, session, "script " + session.file));
     ScriptedAgent agent(session.script);
     result = run_session(session.model, *session.rules, agent, observers);
+    if (recorder && !recorder->error().empty()) throw std::runtime_error(recorder->error());
+    if (recorder) recorded = recorder->frames();
   }
   if (json) {
     print_json(session, result);
   } else {
     print_text(session, result, out);
+    if (recorded >= 0) std::cout << "recorded " << recorded << " frames to " << record << "\n";
   }
   std::cout.flush();
 }
@@ -147,7 +156,7 @@ int watch(const std::string& file, const std::string& out_dir, bool json, long r
 }  // namespace
 
 int run_run(const Args& args) {
-  std::string file, out_dir;
+  std::string file, out_dir, record;
   bool json = false, watching = false;
   long runs = 0;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -159,6 +168,9 @@ int run_run(const Args& args) {
       if (i + 1 >= args.size()) return usage_error("--runs needs a number");
       runs = std::atol(args[++i].c_str());
       if (runs <= 0) return usage_error("--runs needs a number above 0");
+    } else if (args[i] == "--record") {
+      if (i + 1 >= args.size()) return usage_error("--record needs a FILE");
+      record = args[++i];
     } else if (args[i] == "--out") {
       if (i + 1 >= args.size()) return usage_error("--out needs a DIR");
       out_dir = args[++i];
@@ -172,8 +184,9 @@ int run_run(const Args& args) {
   }
   if (file.empty()) return usage_error("run needs a SESSION file");
   if (runs > 0 && !watching) return usage_error("--runs goes with --watch");
+  if (watching && !record.empty()) return usage_error("--record does not go with --watch");
   if (watching) return watch(file, out_dir, json, runs);
-  run_once(load_session(file), out_dir, json);  // DataError: file:line:col, exit 1
+  run_once(load_session(file), out_dir, json, record);  // DataError: file:line:col, exit 1
   return 0;
 }
 

@@ -32,6 +32,8 @@ void compile_lever(const ObjectSpec& o, Model& m) {
   m.application_to = o.application.to;
   m.object_mass = o.mass;
   m.object_start = to_isometry(o.functional_pose);
+  m.symmetry_point = o.symmetry_plane.point;
+  m.symmetry_normal = o.symmetry_plane.normal;
 }
 
 void compile_parts(const ObjectSpec& o, Model& m) {

@@ -66,6 +66,8 @@ struct Model {
   double application_from = 0, application_to = 0;  // m, signed
   double object_mass = 0;                      // kg
   Eigen::Isometry3d object_start = Eigen::Isometry3d::Identity();  // functional pose in the world
+  Eigen::Vector3d symmetry_point = Eigen::Vector3d::Zero();    // m, O_sp in the object frame
+  Eigen::Vector3d symmetry_normal = Eigen::Vector3d::UnitZ();  // unit, O_sp's normal, object frame
   std::vector<ModelPart> parts;
   std::vector<ModelEffect> effects;
 

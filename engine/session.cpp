@@ -82,6 +82,29 @@ void read_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOpt
   options->actee.loc = key_node(node, "position").loc();
 }
 
+// `camera: {position, target, up?, fov?}`: eye and target apart, up not
+// along the view, a field of view inside (0, 180) deg.
+SessionCamera read_camera(const Node& node) {
+  MapReader m(node, "the camera", {"position", "target", "up", "fov"});
+  SessionCamera c;
+  c.set = true;
+  c.position = read_vector(m.required("position"), dim::length);
+  const Node target = m.required("target");
+  c.target = read_vector(target, dim::length);
+  if ((c.target - c.position).norm() < 1e-9) target.fail("a target away from the camera's position", "the same point");
+  if (std::optional<Node> up = m.optional("up")) {
+    c.up = read_direction(*up);
+    if (c.up.cross((c.target - c.position).normalized()).norm() < 1e-6) {
+      up->fail("an up direction across the line of sight", "one along it");
+    }
+  }
+  if (std::optional<Node> fov = m.optional("fov")) {
+    c.fov = read_positive(*fov, dim::angle);
+    if (c.fov >= 3.1) fov->fail("a field of view below 180 deg");
+  }
+  return c;
+}
+
 }  // namespace
 
 CompiledSession read_session(const Node& root) {
@@ -91,7 +114,7 @@ CompiledSession read_session(const Node& root) {
   }
   MapReader m(root, "a session file",
               {"session", "description", "object", "actee", "agent", "rules", "grasps", "timestep",
-               "contact_tolerance", "script"});
+               "contact_tolerance", "camera", "script"});
   CompiledSession s;
   s.file = root.loc().file;
   s.files.push_back(s.file);
@@ -124,6 +147,7 @@ CompiledSession read_session(const Node& root) {
   const Node grasps_node = m.required("grasps");
   options.grasps = load_grasps(files.resolve(root, "grasps", grasps_node));
   const ScriptSpec script = read_script(m.required("script"));
+  if (std::optional<Node> cam = m.optional("camera")) s.camera = read_camera(*cam);
 
   s.rules = load_rules(rules_path);
   s.model = compile(object, actee ? &*actee : nullptr, &agent, options);

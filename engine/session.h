@@ -16,6 +16,11 @@
 //   grasps: ../rules/grasps.yaml   the grasp taxonomy (a path)
 //   timestep: 1 ms                 optional, default 1 ms (the haptic rate)
 //   contact_tolerance: 0.5 mm      optional, default 0.5 mm
+//   camera:                        optional, for `afford render` (world frame):
+//     position: [x, y, z]          the eye
+//     target: [x, y, z]            the point looked at
+//     up: [0, 0, 1]                optional, default +z
+//     fov: 40 deg                  optional, vertical field of view, default 40 deg
 //   script:                        the agent's keyframes (engine/script.h)
 //     - {t: 0 s, hand: ..., grip: ..., posture: ...}
 //
@@ -36,6 +41,15 @@
 
 namespace afford {
 
+// The view `afford render` uses; without `camera:` it frames the scene itself.
+struct SessionCamera {
+  bool set = false;                                   // the session gives `camera:`
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, world: the eye
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();    // m, world: looked at
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();       // unit, world
+  double fov = 0.6981317007977318;                     // rad, vertical field of view (40 deg)
+};
+
 struct CompiledSession {
   std::string file;         // the session file as named
   std::string name;         // `session:`
@@ -43,6 +57,7 @@ struct CompiledSession {
   Model model;              // with its agent, and the actee if the session has one
   std::shared_ptr<const RuleSet> rules;
   Script script;
+  SessionCamera camera;     // `camera:`, optional
   std::vector<std::string> files;  // every file read, the session first (for --watch)
 };
 

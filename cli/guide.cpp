@@ -1,0 +1,269 @@
+// afford guide OBJECT [--actees DIR] [--guides FILE] [--json]: the guides of
+// the paper (Sec. 4.4) for an object, computed as rules/guides.yaml says:
+// as text, or as one JSON object (SI units, the object frame) holding the
+// facts and the geometry a renderer draws.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "commands.h"
+#include "guides.h"
+#include "lever.h"
+#include "load.h"
+#include "model.h"
+#include "trace.h"
+
+namespace afford::cli {
+namespace {
+
+std::string q(double si, const Dimension& d) { return format_quantity(si, d); }
+
+std::string qv(const Eigen::Vector3d& v, const Dimension& d) {
+  return "[" + q(v.x(), d) + ", " + q(v.y(), d) + ", " + q(v.z(), d) + "]";
+}
+
+std::string plain(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", std::abs(v) < 5e-13 ? 0.0 : v);
+  return buf;
+}
+
+std::string fixed2(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
+}
+
+// ---------------------------------------------------------------- text
+
+std::string rotation_text(const Eigen::Matrix3d& r) {
+  const Eigen::AngleAxisd aa(r);
+  if (std::abs(aa.angle()) < 1e-9) return "not turned";
+  const Eigen::Vector3d& a = aa.axis();
+  return "turned " + q(aa.angle(), dim::angle) + " about [" + plain(a.x()) + ", " + plain(a.y()) + ", " +
+         plain(a.z()) + "]";
+}
+
+// Where along the arm pushing magnifies force and where distance: the runs
+// of the advantage map's segments on the fixed arm.
+void print_runs(const Guides& g, int index) {
+  bool open = false, force = false;
+  double from = 0, to = 0;
+  auto flush = [&] {
+    if (!open) return;
+    std::cout << "    " << (force ? "magnifies force    " : "magnifies distance") << " from " << q(from, dim::length)
+              << " to " << q(to, dim::length) << "\n";
+  };
+  for (const GuideSegment& s : g.segments) {
+    if (s.guide != index || s.frame != Arm::fixed) continue;
+    const double r0 = std::min(s.a.x(), s.b.x()), r1 = std::max(s.a.x(), s.b.x());
+    const bool f = s.value >= 1;
+    if (open && f == force && std::abs(r0 - to) < 1e-9) {
+      to = r1;
+      continue;
+    }
+    flush();
+    open = true;
+    force = f;
+    from = r0;
+    to = r1;
+  }
+  flush();
+}
+
+void print_text(const Guides& g, const std::string& guides_file, const std::string& actee_dir) {
+  const GuideFacts& f = g.facts;
+  std::cout << "guides for " << g.object << " (" << guides_file << "), lever " << pattern_name(f.pattern) << "\n";
+  for (size_t i = 0; i < g.guides.size(); ++i) {
+    const GuideSpec& s = g.guides[i];
+    std::cout << s.name << " (" << guide_kind_name(s.kind) << "): " << s.description << "\n";
+    switch (s.kind) {
+      case GuideKind::symmetry_plane:
+        std::cout << "  plane of symmetry through " << qv(f.symmetry_point, dim::length) << ", normal ["
+                  << plain(f.symmetry_normal.x()) << ", " << plain(f.symmetry_normal.y()) << ", "
+                  << plain(f.symmetry_normal.z()) << "] (object frame)\n";
+        std::cout << "  functional pose: object frame at " << qv(f.functional_pose.translation(), dim::length)
+                  << " in the world, " << rotation_text(f.functional_pose.linear()) << "\n";
+        std::cout << "  at the functional pose the plane is " << q(f.plane_to_gravity, dim::angle)
+                  << " from gravity ("
+                  << (f.plane_to_gravity < 0.1 ? "parallel: the stable orientation of Sec. 4.4"
+                                               : "Sec. 4.4: most stable with the plane parallel to gravity")
+                  << ")\n";
+        break;
+      case GuideKind::interaction_space:
+        std::cout << "  interaction space: from " << q(f.space.from, dim::length) << " to "
+                  << q(f.space.to, dim::length) << " along the arm, jaw opening at theta_max "
+                  << q(f.space.gap_from, dim::length) << " to " << q(f.space.gap_to, dim::length) << "\n";
+        if (f.actees.empty()) {
+          std::cout << "  no actees in " << actee_dir << "\n";
+          break;
+        }
+        std::cout << "  actees in " << actee_dir << ":\n";
+        for (const ActeeFit& fit : f.actees) {
+          if (fit.fits) {
+            std::printf("    %-12s fits from %s to %s; jaws touch at %s; its limit needs %s at the emphasis end\n",
+                        fit.name.c_str(), q(fit.from, dim::length).c_str(), q(fit.to, dim::length).c_str(),
+                        q(fit.contact_angle, dim::angle).c_str(), q(fit.effort_to_limit, dim::force).c_str());
+          } else {
+            std::printf("    %-12s does not fit: %s\n", fit.name.c_str(), fit.why.c_str());
+          }
+        }
+        break;
+      case GuideKind::emphasis: {
+        int faces = 0;
+        for (const GuideRect& r : g.rects) faces += r.guide == static_cast<int>(i);
+        std::cout << "  push from " << q(f.emphasis_from, dim::length) << " to " << q(f.emphasis_to, dim::length)
+                  << " along the arms, " << faces << " face" << (faces == 1 ? "" : "s") << ":\n";
+        for (const GuideRect& r : g.rects) {
+          if (r.guide != static_cast<int>(i)) continue;
+          std::cout << "    " << (r.frame == Arm::fixed ? "fixed arm " : "moving arm") << " face at "
+                    << qv(r.centre, dim::length) << ", facing [" << plain(r.normal.x()) << ", "
+                    << plain(r.normal.y()) << ", " << plain(r.normal.z()) << "], " << q(2 * r.half_u, dim::length)
+                    << " by " << q(2 * r.half_v, dim::length) << "\n";
+        }
+        break;
+      }
+      case GuideKind::advantage:
+        std::cout << "  load at " << q(f.load_at, dim::length) << "; mechanical advantage over the emphasis "
+                  << fixed2(f.ma_min) << " to " << fixed2(f.ma_max) << " ("
+                  << (f.ma_min >= 1 ? "amplifies force" : f.ma_max <= 1 ? "amplifies distance" : "both")
+                  << "), along the arm " << fixed2(f.ma_arm_min) << " to " << fixed2(f.ma_arm_max) << "\n";
+        std::cout << "  along the arm, pushing there:\n";
+        print_runs(g, static_cast<int>(i));
+        break;
+    }
+  }
+  auto count = [](size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
+  std::cout << "geometry: " << count(g.rects.size(), "rectangle", "rectangles") << ", "
+            << count(g.meshes.size(), "mesh", "meshes") << ", " << count(g.segments.size(), "segment", "segments")
+            << ", " << count(g.labels.size(), "label", "labels")
+            << " (afford guide --json)\n";
+}
+
+// ---------------------------------------------------------------- JSON
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", std::abs(v) < 1e-15 ? 0.0 : v);
+  return buf;
+}
+
+std::string vec(const Eigen::Vector3d& v) { return "[" + num(v.x()) + "," + num(v.y()) + "," + num(v.z()) + "]"; }
+
+std::string colour(const GuideColour& c) {
+  return "[" + num(c.r) + "," + num(c.g) + "," + num(c.b) + "," + num(c.a) + "]";
+}
+
+std::string head(int guide, Arm frame) {
+  return "{\"guide\":" + std::to_string(guide) + ",\"frame\":\"" + (frame == Arm::fixed ? "fixed" : "moving") + "\"";
+}
+
+template <typename T, typename F>
+std::string list(const std::vector<T>& items, F item) {
+  std::string j = "[";
+  for (size_t i = 0; i < items.size(); ++i) j += (i ? "," : "") + item(items[i]);
+  return j + "]";
+}
+
+void print_json(const Guides& g) {
+  const GuideFacts& f = g.facts;
+  std::string j = "{\"object\":" + json_string(g.object);
+  j += ",\"guides\":" + list(g.guides, [](const GuideSpec& s) {
+         return "{\"name\":" + json_string(s.name) + ",\"kind\":\"" + guide_kind_name(s.kind) +
+                "\",\"description\":" + json_string(s.description) + ",\"colour\":" + colour(s.colour) + "}";
+       });
+  const Eigen::Matrix3d r = f.functional_pose.linear();
+  j += ",\"facts\":{\"pattern\":\"" + std::string(pattern_name(f.pattern)) + "\"";
+  j += ",\"symmetry_plane\":{\"point\":" + vec(f.symmetry_point) + ",\"normal\":" + vec(f.symmetry_normal) + "}";
+  j += ",\"functional_pose\":{\"position\":" + vec(f.functional_pose.translation()) + ",\"rotation\":[" +
+       vec(r.row(0)) + "," + vec(r.row(1)) + "," + vec(r.row(2)) + "]}";
+  j += ",\"plane_to_gravity\":" + num(f.plane_to_gravity);
+  j += ",\"interaction_space\":{\"from\":" + num(f.space.from) + ",\"to\":" + num(f.space.to) +
+       ",\"gap_from\":" + num(f.space.gap_from) + ",\"gap_to\":" + num(f.space.gap_to) + "}";
+  j += ",\"actees\":" + list(f.actees, [](const ActeeFit& a) {
+         return "{\"name\":" + json_string(a.name) + ",\"fits\":" + (a.fits ? "true" : "false") +
+                ",\"from\":" + num(a.from) + ",\"to\":" + num(a.to) + ",\"contact_angle\":" + num(a.contact_angle) +
+                ",\"effort_to_limit\":" + num(a.effort_to_limit) + ",\"why\":" + json_string(a.why) + "}";
+       });
+  j += ",\"emphasis\":{\"from\":" + num(f.emphasis_from) + ",\"to\":" + num(f.emphasis_to) + "}";
+  j += ",\"advantage\":{\"load_at\":" + num(f.load_at) + ",\"ma_min\":" + num(f.ma_min) + ",\"ma_max\":" +
+       num(f.ma_max) + ",\"ma_arm_min\":" + num(f.ma_arm_min) + ",\"ma_arm_max\":" + num(f.ma_arm_max) + "}}";
+  j += ",\"rects\":" + list(g.rects, [](const GuideRect& x) {
+         return head(x.guide, x.frame) + ",\"centre\":" + vec(x.centre) + ",\"u\":" + vec(x.u) + ",\"v\":" +
+                vec(x.v) + ",\"normal\":" + vec(x.normal) + ",\"half_u\":" + num(x.half_u) +
+                ",\"half_v\":" + num(x.half_v) + ",\"colour\":" + colour(x.colour) + "}";
+       });
+  j += ",\"meshes\":" + list(g.meshes, [](const GuideMesh& x) {
+         return head(x.guide, x.frame) + ",\"vertices\":" + list(x.vertices, vec) + ",\"triangles\":" +
+                list(x.triangles,
+                     [](const std::array<int, 3>& t) {
+                       return "[" + std::to_string(t[0]) + "," + std::to_string(t[1]) + "," +
+                              std::to_string(t[2]) + "]";
+                     }) +
+                ",\"colour\":" + colour(x.colour) + "}";
+       });
+  j += ",\"segments\":" + list(g.segments, [](const GuideSegment& x) {
+         return head(x.guide, x.frame) + ",\"a\":" + vec(x.a) + ",\"b\":" + vec(x.b) + ",\"colour\":" +
+                colour(x.colour) + ",\"value\":" + num(x.value) + ",\"distance\":" + num(x.distance) + "}";
+       });
+  j += ",\"labels\":" + list(g.labels, [](const GuideLabel& x) {
+         return head(x.guide, x.frame) + ",\"text\":" + json_string(x.text) + ",\"anchor\":" + vec(x.anchor) +
+                ",\"colour\":" + colour(x.colour) + "}";
+       });
+  std::cout << j << "}\n";
+}
+
+// A data folder beside the object's folder (objects/../NAME), else NAME
+// relative to the working directory.
+std::string beside_objects(const std::string& object_file, const std::string& name) {
+  const std::filesystem::path p = std::filesystem::path(object_file).parent_path().parent_path() / name;
+  return std::filesystem::exists(p) ? p.string() : name;
+}
+
+}  // namespace
+
+int run_guide(const Args& args) {
+  std::string file, actee_dir, guides_file;
+  bool json = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--json") {
+      json = true;
+    } else if (args[i] == "--actees" || args[i] == "--guides") {
+      if (i + 1 >= args.size()) return usage_error(args[i] + (args[i] == "--actees" ? " needs a DIR" : " needs a FILE"));
+      (args[i] == "--actees" ? actee_dir : guides_file) = args[i + 1];
+      ++i;
+    } else if (args[i].starts_with("--")) {
+      return usage_error("guide: unknown option '" + args[i] + "'");
+    } else if (file.empty()) {
+      file = args[i];
+    } else {
+      return usage_error("guide takes one OBJECT file");
+    }
+  }
+  if (file.empty()) return usage_error("guide needs an OBJECT file");
+  const Node root = load_yaml_file(file);
+  const std::string kind = file_kind(root);
+  if (kind != "object") return usage_error("guide reads object files; " + file + " is a " + kind + " file");
+  if (actee_dir.empty()) actee_dir = beside_objects(file, "actees");
+  if (guides_file.empty()) guides_file = (std::filesystem::path(beside_objects(file, "rules")) / "guides.yaml").string();
+  if (!actee_dir.empty() && !std::filesystem::is_directory(actee_dir)) {
+    return usage_error("--actees: '" + actee_dir + "' is not a directory");
+  }
+
+  const ObjectSpec object = read_object(root);
+  const std::vector<GuideSpec> specs = load_guides(guides_file);
+  const std::vector<ActeeFit> fits = fit_actees(object, load_actee_folder(actee_dir));
+  const Model model = compile(object, nullptr, nullptr, ModelOptions{});
+  const Guides guides = compute_guides(model, specs, fits);
+  if (json) {
+    print_json(guides);
+  } else {
+    print_text(guides, guides_file, actee_dir);
+  }
+  return 0;
+}
+
+}  // namespace afford::cli

@@ -1,0 +1,175 @@
+// afford replay REC [--rules FILE] [--json]: re-runs a recording (made by
+// `afford run --record` or `afford live`) from its recorded model files and
+// samples, and checks that every frame's events are the recorded ones, bit
+// for bit (exit 1 at the first frame that differs). With --rules it re-runs
+// under the function models of FILE instead and prints the difference of
+// the two timelines (exit 0).
+#include <cstdio>
+#include <iostream>
+
+#include "commands.h"
+#include "recording_source.h"
+#include "run.h"
+#include "timeline_diff.h"
+#include "trace.h"
+
+namespace afford::cli {
+namespace {
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+const char* kEventNames[] = {"node_reached", "node_lost", "inferred"};
+const char* kTailNames[] = {"end", "no_end", "incomplete", "corrupt"};
+
+void print_inferences(const RunResult& r) {
+  if (r.inferences.empty()) std::cout << "no function inferred\n";
+  for (const Inference& inf : r.inferences) {
+    std::printf("%s at %.3f s\n", inf.function.c_str(), inf.t);
+    for (const NodeExplanation& n : inf.nodes) std::printf("  %8.3f s  %s\n", n.t, n.text.c_str());
+  }
+  std::fflush(stdout);
+}
+
+std::string json_inferences(const RunResult& r) {
+  std::string j = "[";
+  for (size_t i = 0; i < r.inferences.size(); ++i) {
+    const Inference& inf = r.inferences[i];
+    j += (i ? ",{" : "{") + std::string("\"name\":") + json_string(inf.function) + ",\"t\":" + number(inf.t) +
+         ",\"explanation\":[";
+    for (size_t n = 0; n < inf.nodes.size(); ++n) {
+      j += (n ? ",{" : "{") + std::string("\"t\":") + number(inf.nodes[n].t) +
+           ",\"text\":" + json_string(inf.nodes[n].text) + "}";
+    }
+    j += "]}";
+  }
+  return j + "]";
+}
+
+std::string json_event(const NamedEvent& e) {
+  return "\"event\":\"" + std::string(kEventNames[static_cast<int>(e.kind)]) + "\",\"function\":" +
+         json_string(e.function) + ",\"node\":" + std::to_string(e.node) + ",\"text\":" + json_string(e.text);
+}
+
+// The recorded events must name functions and nodes of the recorded rules.
+void check_events(const Recording& rec, const RuleSet& rules) {
+  for (const Event& e : rec.events) {
+    const bool ok = e.function >= 0 && e.function < function_count(rules) && e.node >= 0 &&
+                    e.node < node_count(rules, e.function);
+    if (!ok) throw std::runtime_error(rec.file + ": the recorded events do not match the recorded function models");
+  }
+}
+
+}  // namespace
+
+int run_replay(const Args& args) {
+  std::string file, rules_file;
+  bool json = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--json") {
+      json = true;
+    } else if (args[i] == "--rules") {
+      if (i + 1 >= args.size()) return usage_error("--rules needs a FILE of function models");
+      rules_file = args[++i];
+    } else if (!args[i].empty() && args[i][0] == '-') {
+      return usage_error("replay: unknown option '" + args[i] + "'");
+    } else if (file.empty()) {
+      file = args[i];
+    } else {
+      return usage_error("replay takes one recording");
+    }
+  }
+  if (file.empty()) return usage_error("replay needs a recording (made by afford run --record)");
+
+  const Recording rec = read_recording(file);
+  const CompiledSession session = load_recorded_session(rec);
+  check_events(rec, *session.rules);
+  const std::vector<std::string> changed = changed_since_recording(rec);
+  std::string json_changed = "[";
+  for (const std::string& f : changed) json_changed += (json_changed.size() > 1 ? "," : "") + json_string(f);
+  json_changed += "]";
+  if (!json) {
+    std::cout << "recording " << rec.file << ": session " << rec.session_name << " (" << rec.source << "), "
+              << rec.summary() << "\n";
+    for (const std::string& f : changed) {
+      std::cout << "note: " << f << " has changed since the recording (or is gone); replaying the recorded copy\n";
+    }
+    std::cout.flush();
+  }
+  RecordingSource source(rec);
+
+  if (rules_file.empty()) {
+    ReplayChecker checker(rec, true);
+    Observer* const observers[] = {&checker};
+    const RunResult result = run_session(session.model, *session.rules, source, observers);
+    if (json) {
+      std::string j = "{\"recording\":" + json_string(rec.file) + ",\"session\":" + json_string(rec.session_name) +
+                      ",\"frames\":" + std::to_string(result.frames) + ",\"tail\":\"" +
+                      kTailNames[static_cast<int>(rec.tail)] + "\",\"changed_since\":" + json_changed +
+                      ",\"identical\":" +
+                      (checker.identical() ? "true" : "false") + ",\"functions\":" + json_inferences(result);
+      if (!checker.identical()) {
+        j += ",\"first_difference\":{\"frame\":" + std::to_string(checker.first_difference()) +
+             ",\"detail\":" + json_string(checker.describe(*session.rules)) + "}";
+      }
+      std::cout << j << "}\n";
+      return checker.identical() ? 0 : 1;
+    }
+    print_inferences(result);
+    if (!checker.identical()) {
+      std::cout << "replayed " << result.frames << " frames: " << checker.describe(*session.rules) << "\n";
+      return 1;
+    }
+    std::cout << "replayed " << result.frames << " frames: events identical to the recording";
+    if (rec.tail == RecordingTail::end) std::cout << ", and the final state";
+    std::cout << "\n";
+    return 0;
+  }
+
+  // Under edited function models: the same samples, other rules.
+  const std::shared_ptr<const RuleSet> rules = load_rules(rules_file);  // DataError: file:line:col
+  ReplayChecker physics(rec, false);  // the state must still be the recorded one
+  TimelineCollector rerun(rec.events.size() + 1024);
+  Observer* const observers[] = {&physics, &rerun};
+  const RunResult result = run_session(session.model, *rules, source, observers);
+  std::vector<NamedEvent> recorded;
+  recorded.reserve(rec.events.size());
+  for (const Event& e : rec.events) recorded.push_back(name_event(*session.rules, e));
+  const TimelineDiff diff = diff_timelines(recorded, rerun.named(*rules));
+
+  if (json) {
+    std::string j = "{\"recording\":" + json_string(rec.file) + ",\"rules\":" + json_string(rules_file) +
+                    ",\"frames\":" + std::to_string(result.frames) + ",\"functions\":" + json_inferences(result) +
+                    ",\"same\":" + std::to_string(diff.same) + ",\"diff\":[";
+    for (size_t i = 0; i < diff.changes.size(); ++i) {
+      const TimelineChange& c = diff.changes[i];
+      static const char* kChange[] = {"only_recorded", "only_rerun", "shifted"};
+      const NamedEvent& e = c.kind == TimelineChange::added ? c.after : c.before;
+      j += (i ? ",{" : "{") + std::string("\"change\":\"") + kChange[c.kind] + "\"," + json_event(e);
+      if (c.kind != TimelineChange::added) j += ",\"recorded_t\":" + number(c.before.t);
+      if (c.kind != TimelineChange::removed) j += ",\"rerun_t\":" + number(c.after.t);
+      j += "}";
+    }
+    j += std::string("],\"same_state\":") + (physics.identical() ? "true" : "false") + "}";
+    std::cout << j << "\n";
+    return 0;
+  }
+  std::cout << "re-ran " << result.frames << " frames under " << rules_file << "\n";
+  print_inferences(result);
+  if (!physics.identical()) {
+    std::cout << "note: the simulation itself differs from the recording: " << physics.describe(*rules) << "\n";
+  }
+  if (diff.identical()) {
+    std::cout << "the timelines are identical (" << diff.same << " events)\n";
+    return 0;
+  }
+  std::cout << "timeline difference, recorded (-) vs re-run (+):\n" << format_diff(diff);
+  std::cout << diff.same << " events the same, " << diff.shifted << " shifted, " << diff.removed
+            << " only in the recording, " << diff.added << " only in the re-run\n";
+  return 0;
+}
+
+}  // namespace afford::cli

@@ -1,0 +1,117 @@
+#include "image.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace afford::render {
+
+Image::Image(int w, int h, Rgb fill) : width(w), height(h), rgb(static_cast<size_t>(w) * static_cast<size_t>(h) * 3) {
+  for (size_t i = 0; i < rgb.size(); i += 3) {
+    rgb[i] = fill.r;
+    rgb[i + 1] = fill.g;
+    rgb[i + 2] = fill.b;
+  }
+}
+
+Rgb Image::at(int x, int y) const {
+  const size_t i = (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) * 3;
+  return {rgb[i], rgb[i + 1], rgb[i + 2]};
+}
+
+void Image::set(int x, int y, Rgb c) {
+  if (x < 0 || y < 0 || x >= width || y >= height) return;
+  const size_t i = (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) * 3;
+  rgb[i] = c.r;
+  rgb[i + 1] = c.g;
+  rgb[i + 2] = c.b;
+}
+
+void Image::blend(int x, int y, Rgb c, double a) {
+  if (x < 0 || y < 0 || x >= width || y >= height || a <= 0) return;
+  a = std::min(a, 1.0);
+  const size_t i = (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) * 3;
+  auto mix = [a](std::uint8_t old, std::uint8_t v) {
+    return static_cast<std::uint8_t>(std::lround(old + (v - old) * a));
+  };
+  rgb[i] = mix(rgb[i], c.r);
+  rgb[i + 1] = mix(rgb[i + 1], c.g);
+  rgb[i + 2] = mix(rgb[i + 2], c.b);
+}
+
+void fill_rect(Image& img, int x0, int y0, int w, int h, Rgb c) {
+  const int xa = std::max(x0, 0), ya = std::max(y0, 0);
+  const int xb = std::min(x0 + w, img.width), yb = std::min(y0 + h, img.height);
+  for (int y = ya; y < yb; ++y) {
+    for (int x = xa; x < xb; ++x) img.set(x, y, c);
+  }
+}
+
+void stroke_rect(Image& img, int x0, int y0, int w, int h, Rgb c) {
+  fill_rect(img, x0, y0, w, 1, c);
+  fill_rect(img, x0, y0 + h - 1, w, 1, c);
+  fill_rect(img, x0, y0, 1, h, c);
+  fill_rect(img, x0 + w - 1, y0, 1, h, c);
+}
+
+// Coverage of each pixel by a capsule around the segment (distance test at
+// the pixel centre with a one-pixel ramp): cheap anti-aliasing.
+void draw_line(Image& img, double x0, double y0, double x1, double y1, Rgb c, double width, double dash) {
+  const double dx = x1 - x0, dy = y1 - y0;
+  const double len2 = dx * dx + dy * dy;
+  const double len = std::sqrt(len2);
+  const double r = width / 2;
+  const int xa = static_cast<int>(std::floor(std::min(x0, x1) - r - 1));
+  const int xb = static_cast<int>(std::ceil(std::max(x0, x1) + r + 1));
+  const int ya = static_cast<int>(std::floor(std::min(y0, y1) - r - 1));
+  const int yb = static_cast<int>(std::ceil(std::max(y0, y1) + r + 1));
+  for (int y = std::max(ya, 0); y <= std::min(yb, img.height - 1); ++y) {
+    for (int x = std::max(xa, 0); x <= std::min(xb, img.width - 1); ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      double u = len2 > 0 ? ((px - x0) * dx + (py - y0) * dy) / len2 : 0;
+      u = std::clamp(u, 0.0, 1.0);
+      if (dash > 0 && std::fmod(u * len, 2 * dash) > dash) continue;
+      const double ex = x0 + u * dx - px, ey = y0 + u * dy - py;
+      const double d = std::sqrt(ex * ex + ey * ey);
+      const double cover = std::clamp(r + 0.5 - d, 0.0, 1.0);
+      if (cover > 0) img.blend(x, y, c, cover);
+    }
+  }
+}
+
+void blit(Image& dst, const Image& src, int x, int y) {
+  for (int j = 0; j < src.height; ++j) {
+    const int ty = y + j;
+    if (ty < 0 || ty >= dst.height) continue;
+    for (int i = 0; i < src.width; ++i) {
+      const int tx = x + i;
+      if (tx < 0 || tx >= dst.width) continue;
+      dst.set(tx, ty, src.at(i, j));
+    }
+  }
+}
+
+Image downsample(const Image& src, int factor) {
+  if (factor <= 1) return src;
+  Image out(src.width / factor, src.height / factor);
+  const int n = factor * factor;
+  for (int y = 0; y < out.height; ++y) {
+    for (int x = 0; x < out.width; ++x) {
+      int sum[3] = {0, 0, 0};
+      for (int j = 0; j < factor; ++j) {
+        const std::uint8_t* row = &src.rgb[(static_cast<size_t>(y * factor + j) * static_cast<size_t>(src.width) +
+                                            static_cast<size_t>(x * factor)) * 3];
+        for (int i = 0; i < factor; ++i) {
+          sum[0] += row[i * 3];
+          sum[1] += row[i * 3 + 1];
+          sum[2] += row[i * 3 + 2];
+        }
+      }
+      out.set(x, y,
+              {static_cast<std::uint8_t>((sum[0] + n / 2) / n), static_cast<std::uint8_t>((sum[1] + n / 2) / n),
+               static_cast<std::uint8_t>((sum[2] + n / 2) / n)});
+    }
+  }
+  return out;
+}
+
+}  // namespace afford::render

@@ -1,0 +1,356 @@
+#include "plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace afford::render {
+namespace {
+
+constexpr Rgb kInk{40, 44, 52}, kGrid{225, 228, 234}, kAxis{120, 126, 138}, kPanel{252, 252, 253};
+constexpr Rgb kAngle{52, 101, 164}, kEffort{230, 140, 10}, kActeeForce{200, 30, 30}, kLimit{120, 20, 20};
+constexpr Rgb kReached{40, 150, 70}, kLost{200, 60, 40};
+
+enum class Anchor { start, middle, end };
+
+struct Pt {
+  double x, y;
+};
+
+// The drawing operations the plot needs, with an SVG and a raster backend.
+class Canvas {
+ public:
+  virtual ~Canvas() = default;
+  virtual void rect(double x, double y, double w, double h, Rgb fill) = 0;
+  virtual void line(double x0, double y0, double x1, double y1, Rgb c, double width, double dash = 0) = 0;
+  virtual void polyline(const std::vector<Pt>& p, Rgb c, double width) = 0;
+  virtual void polygon(const std::vector<Pt>& p, Rgb fill) = 0;
+  // y is the middle of the text's height.
+  virtual void text(double x, double y, const std::string& s, Rgb c, Anchor a = Anchor::start) = 0;
+  virtual double text_width(const std::string& s) const = 0;
+};
+
+std::string hex(Rgb c) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
+  return buf;
+}
+
+std::string xml(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", v);
+  return buf;
+}
+
+class SvgCanvas : public Canvas {
+ public:
+  SvgCanvas(int w, int h) {
+    out_ = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(w) + "\" height=\"" +
+           std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) +
+           "\" font-family=\"DejaVu Sans Mono, monospace\" font-size=\"13\">\n";
+  }
+  std::string finish() { return out_ + "</svg>\n"; }
+  void rect(double x, double y, double w, double h, Rgb fill) override {
+    out_ += "<rect x=\"" + num(x) + "\" y=\"" + num(y) + "\" width=\"" + num(w) + "\" height=\"" + num(h) +
+            "\" fill=\"" + hex(fill) + "\"/>\n";
+  }
+  void line(double x0, double y0, double x1, double y1, Rgb c, double width, double dash) override {
+    out_ += "<line x1=\"" + num(x0) + "\" y1=\"" + num(y0) + "\" x2=\"" + num(x1) + "\" y2=\"" + num(y1) +
+            "\" stroke=\"" + hex(c) + "\" stroke-width=\"" + num(width) + "\"" +
+            (dash > 0 ? " stroke-dasharray=\"" + num(dash) + "\"" : std::string()) + "/>\n";
+  }
+  void polyline(const std::vector<Pt>& p, Rgb c, double width) override {
+    out_ += "<polyline fill=\"none\" stroke=\"" + hex(c) + "\" stroke-width=\"" + num(width) +
+            "\" stroke-linejoin=\"round\" points=\"";
+    for (const Pt& q : p) out_ += num(q.x) + "," + num(q.y) + " ";
+    out_ += "\"/>\n";
+  }
+  void polygon(const std::vector<Pt>& p, Rgb fill) override {
+    out_ += "<polygon fill=\"" + hex(fill) + "\" points=\"";
+    for (const Pt& q : p) out_ += num(q.x) + "," + num(q.y) + " ";
+    out_ += "\"/>\n";
+  }
+  void text(double x, double y, const std::string& s, Rgb c, Anchor a) override {
+    static const char* const kAnchor[] = {"start", "middle", "end"};
+    out_ += "<text x=\"" + num(x) + "\" y=\"" + num(y + 4.5) + "\" fill=\"" + hex(c) + "\" text-anchor=\"" +
+            kAnchor[static_cast<int>(a)] + "\">" + xml(s) + "</text>\n";
+  }
+  double text_width(const std::string& s) const override { return 7.8 * static_cast<double>(s.size()); }
+
+ private:
+  std::string out_;
+};
+
+class RasterCanvas : public Canvas {
+ public:
+  explicit RasterCanvas(Image* img) : img_(img) {}
+  void rect(double x, double y, double w, double h, Rgb fill) override {
+    fill_rect(*img_, static_cast<int>(std::lround(x)), static_cast<int>(std::lround(y)),
+              static_cast<int>(std::lround(w)), static_cast<int>(std::lround(h)), fill);
+  }
+  void line(double x0, double y0, double x1, double y1, Rgb c, double width, double dash) override {
+    draw_line(*img_, x0, y0, x1, y1, c, width, dash);
+  }
+  void polyline(const std::vector<Pt>& p, Rgb c, double width) override {
+    for (size_t i = 1; i < p.size(); ++i) draw_line(*img_, p[i - 1].x, p[i - 1].y, p[i].x, p[i].y, c, width);
+  }
+  void polygon(const std::vector<Pt>& p, Rgb fill) override {
+    double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+    for (const Pt& q : p) {
+      x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
+    }
+    for (int y = static_cast<int>(std::floor(y0)); y <= static_cast<int>(std::ceil(y1)); ++y) {
+      for (int x = static_cast<int>(std::floor(x0)); x <= static_cast<int>(std::ceil(x1)); ++x) {
+        const double px = x + 0.5, py = y + 0.5;
+        bool in = false;
+        for (size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
+          if ((p[i].y > py) != (p[j].y > py) &&
+              px < (p[j].x - p[i].x) * (py - p[i].y) / (p[j].y - p[i].y) + p[i].x) {
+            in = !in;
+          }
+        }
+        if (in) img_->set(x, y, fill);
+      }
+    }
+  }
+  void text(double x, double y, const std::string& s, Rgb c, Anchor a) override {
+    const double w = text_width(s);
+    const double left = a == Anchor::start ? x : a == Anchor::middle ? x - w / 2 : x - w;
+    draw_text(*img_, static_cast<int>(std::lround(left)), static_cast<int>(std::lround(y - kGlyphHeight)), s, c, 2);
+  }
+  double text_width(const std::string& s) const override {
+    return static_cast<double>(render::text_width(s, 2));
+  }
+
+ private:
+  Image* img_;
+};
+
+// "Nice" tick step: 1, 2 or 5 times a power of ten, about n ticks over span.
+double tick_step(double span, int n) {
+  if (span <= 0) return 1;
+  const double raw = span / n;
+  const double p = std::pow(10, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0, 10.0}) {
+    if (raw <= m * p) return m * p;
+  }
+  return 10 * p;
+}
+
+std::string tick_label(double v, double step) {
+  char buf[32];
+  const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < step * 1e-6 ? 0.0 : v);
+  return buf;
+}
+
+constexpr int kLeft = 86, kRight = 200, kTop = 58, kPanelA = 170, kGap = 34, kPanelB = 230, kLane = 24;
+
+struct Axis {
+  double lo, hi;  // data
+  double top, bottom;  // pixels
+  double y(double v) const { return bottom - (v - lo) / (hi - lo) * (bottom - top); }
+};
+
+void draw(Canvas& c, const Timeline& tl, int width, int height) {
+  const double x0 = kLeft, x1 = width - kRight;
+  const double t_end = std::max(tl.end_time, tl.samples.empty() ? 1.0 : tl.samples.back().t);
+  auto X = [&](double t) { return x0 + t / std::max(t_end, 1e-9) * (x1 - x0); };
+  const double rad2deg = 180 / std::numbers::pi;
+
+  c.rect(0, 0, width, height, {255, 255, 255});
+  c.text(12, 14, tl.title + ": timeline" + (tl.has_actee ? " (actee " + tl.actee_name + ")" : std::string()), kInk);
+
+  // Data ranges.
+  double a_lo = 0, a_hi = 1, f_hi = 1;
+  for (const TimelineSample& s : tl.samples) {
+    a_lo = std::min(a_lo, s.angle * rad2deg);
+    a_hi = std::max(a_hi, s.angle * rad2deg);
+    f_hi = std::max({f_hi, s.effort, s.actee});
+  }
+  if (tl.has_actee) f_hi = std::max(f_hi, tl.limit);
+  const double a_step = tick_step(a_hi - a_lo, 5), f_step = tick_step(f_hi * 1.08, 6);
+  const Axis angle{std::floor(a_lo / a_step) * a_step, std::ceil(a_hi * 1.04 / a_step) * a_step, kTop,
+                   kTop + kPanelA};
+  const Axis force{0, std::ceil(f_hi * 1.08 / f_step) * f_step, kTop + kPanelA + kGap, kTop + kPanelA + kGap + kPanelB};
+  const double lanes_top = force.bottom + kGap;
+  const double lanes_bottom = lanes_top + kLane * static_cast<double>(tl.functions.size());
+  const double t_step = tick_step(t_end, 10);
+
+  // Panels with grids and tick labels.
+  for (const auto& [axis, step, unit] : {std::tuple{angle, a_step, "angle [deg]"}, std::tuple{force, f_step, "force [N]"}}) {
+    c.rect(x0, axis.top, x1 - x0, axis.bottom - axis.top, kPanel);
+    for (double v = axis.lo; v <= axis.hi + step * 1e-6; v += step) {
+      const double y = axis.y(v);
+      c.line(x0, y, x1, y, kGrid, 1);
+      c.line(x0 - 5, y, x0, y, kAxis, 1);
+      c.text(x0 - 8, y, tick_label(v, step), kInk, Anchor::end);
+    }
+    for (double t = 0; t <= t_end + t_step * 1e-6; t += t_step) c.line(X(t), axis.top, X(t), axis.bottom, kGrid, 1);
+    c.line(x0, axis.top, x0, axis.bottom, kAxis, 1);
+    c.line(x0, axis.bottom, x1, axis.bottom, kAxis, 1);
+    c.text(12, axis.top - 14, unit, kInk);
+  }
+  // Time axis under the lanes.
+  const double t_axis = lanes_bottom + 6;
+  c.line(x0, t_axis, x1, t_axis, kAxis, 1);
+  for (double t = 0; t <= t_end + t_step * 1e-6; t += t_step) {
+    c.line(X(t), t_axis, X(t), t_axis + 5, kAxis, 1);
+    c.text(X(t), t_axis + 16, tick_label(t, t_step), kInk, Anchor::middle);
+  }
+  c.text((x0 + x1) / 2, t_axis + 36, "time [s]", kInk, Anchor::middle);
+
+  // Inferred functions: a line through both panels and the lanes.
+  for (const TimelineMark& m : tl.marks) {
+    if (m.kind == EventKind::inferred) c.line(X(m.t), angle.top, X(m.t), lanes_bottom, function_colour(m.function), 1.5, 5);
+  }
+
+  // The curves.
+  auto curve = [&](const Axis& axis, auto value, Rgb col, double stroke) {
+    std::vector<Pt> pts;
+    double last_x = -1e9;
+    for (size_t i = 0; i < tl.samples.size(); ++i) {
+      const double x = X(tl.samples[i].t);
+      // One point per half pixel is as much as the eye sees.
+      if (x - last_x < 0.5 && i + 1 < tl.samples.size()) continue;
+      pts.push_back({x, axis.y(value(tl.samples[i]))});
+      last_x = x;
+    }
+    c.polyline(pts, col, stroke);
+  };
+  curve(angle, [&](const TimelineSample& s) { return s.angle * rad2deg; }, kAngle, 2);
+  if (tl.has_actee) c.line(x0, force.y(tl.limit), x1, force.y(tl.limit), kLimit, 1.5, 7);
+  curve(force, [](const TimelineSample& s) { return s.effort; }, kEffort, 2);
+  if (tl.has_actee) curve(force, [](const TimelineSample& s) { return s.actee; }, kActeeForce, 2);
+
+  // The inferred functions' names over the curves, on white, each in the
+  // first row where it overlaps no other name.
+  std::vector<std::vector<std::pair<double, double>>> rows;
+  for (const TimelineMark& m : tl.marks) {
+    if (m.kind != EventKind::inferred) continue;
+    const Rgb col = function_colour(m.function);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s %.2f s", tl.functions[static_cast<size_t>(m.function)].c_str(), m.t);
+    const double w = c.text_width(buf) + 8;
+    const bool left = X(m.t) + 4 + w > x1;
+    const double bx = left ? X(m.t) - 4 - w : X(m.t) + 4;
+    size_t row = 0;
+    for (; row < rows.size(); ++row) {
+      bool clear = true;
+      for (const auto& [a, b] : rows[row]) clear = clear && (bx + w < a || bx > b);
+      if (clear) break;
+    }
+    if (row == rows.size()) rows.emplace_back();
+    rows[row].push_back({bx, bx + w});
+    const double y = angle.top + 16 + 22 * static_cast<double>(row % 6);
+    c.rect(bx, y - 9, w, 18, {255, 255, 255});
+    c.text(bx + 4, y, buf, col);
+  }
+
+  // Lanes: each function's nodes reached (up triangle) and lost (down).
+  for (size_t f = 0; f < tl.functions.size(); ++f) {
+    const double y = lanes_top + kLane * (static_cast<double>(f) + 0.5);
+    if (f % 2 == 0) c.rect(x0, y - kLane / 2.0, x1 - x0, kLane, {246, 247, 250});
+    c.text(x0 - 8, y, tl.functions[f], function_colour(static_cast<int>(f)), Anchor::end);
+  }
+  for (const TimelineMark& m : tl.marks) {
+    const double y = lanes_top + kLane * (m.function + 0.5), x = X(m.t);
+    if (m.kind == EventKind::node_reached) {
+      c.polygon({{x - 5, y + 5}, {x + 5, y + 5}, {x, y - 5}}, kReached);
+    } else if (m.kind == EventKind::node_lost) {
+      c.polygon({{x - 5, y - 5}, {x + 5, y - 5}, {x, y + 5}}, kLost);
+    } else {
+      c.polygon({{x, y - 8}, {x + 8, y}, {x, y + 8}, {x - 8, y}}, function_colour(m.function));
+    }
+  }
+
+  // Legend, right of the panels.
+  double ly = angle.top + 8;
+  const double lx = x1 + 16;
+  auto entry = [&](Rgb col, const std::string& label, double dash) {
+    c.line(lx, ly, lx + 26, ly, col, 2.5, dash);
+    c.text(lx + 34, ly, label, kInk);
+    ly += 22;
+  };
+  entry(kAngle, "angle", 0);
+  entry(kEffort, "effort force", 0);
+  if (tl.has_actee) {
+    entry(kActeeForce, "actee force", 0);
+    entry(kLimit, "actee limit", 7);
+  }
+  ly += 6;
+  c.polygon({{lx + 8, ly + 5}, {lx + 18, ly + 5}, {lx + 13, ly - 5}}, kReached);
+  c.text(lx + 34, ly, "node reached", kInk);
+  ly += 22;
+  c.polygon({{lx + 8, ly - 5}, {lx + 18, ly - 5}, {lx + 13, ly + 5}}, kLost);
+  c.text(lx + 34, ly, "node lost", kInk);
+  ly += 22;
+  c.polygon({{lx + 13, ly - 7}, {lx + 20, ly}, {lx + 13, ly + 7}, {lx + 6, ly}}, kInk);
+  c.text(lx + 34, ly, "inferred", kInk);
+}
+
+}  // namespace
+
+Rgb function_colour(int function) {
+  static constexpr Rgb kPalette[] = {{31, 119, 180}, {44, 160, 44}, {214, 39, 40}, {148, 103, 189},
+                                     {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34},
+                                     {23, 190, 207}};
+  const int n = static_cast<int>(sizeof kPalette / sizeof kPalette[0]);
+  return kPalette[((function % n) + n) % n];
+}
+
+void TimelineRecorder::on_start(const Model& model, const State&, const RuleSet& rules) {
+  timeline_.has_actee = model.has_actee;
+  timeline_.limit = model.actee_limit;
+  timeline_.actee_name = model.actee_name;
+  timeline_.functions.clear();
+  for (int f = 0; f < function_count(rules); ++f) timeline_.functions.push_back(function_name(rules, f));
+  timeline_.samples.clear();
+  timeline_.samples.reserve(1 << 14);
+  timeline_.marks.clear();
+}
+
+void TimelineRecorder::on_frame(const Model&, const State& s, const RuleSet& rules, const RuleState& rs) {
+  timeline_.samples.push_back({s.t, s.theta, s.effort_force, s.actee_force});
+  timeline_.end_time = s.t;
+  for (const Event* e = events_begin(rs); e != events_end(rs); ++e) {
+    const int nodes = node_count(rules, e->function);
+    int node = e->kind == EventKind::inferred ? nodes - 1 : e->node;
+    std::string text = node >= 0 && node < nodes ? node_text(rules, e->function, node) : std::string();
+    timeline_.marks.push_back({e->t, e->kind, e->function, node, std::move(text)});
+  }
+}
+
+int plot_height(const Timeline& tl) {
+  return kTop + kPanelA + kGap + kPanelB + kGap + kLane * static_cast<int>(tl.functions.size()) + 56;
+}
+
+std::string plot_svg(const Timeline& tl, int width) {
+  SvgCanvas c(width, plot_height(tl));
+  draw(c, tl, width, plot_height(tl));
+  return c.finish();
+}
+
+Image plot_png(const Timeline& tl, int width) {
+  Image img(width, plot_height(tl));
+  RasterCanvas c(&img);
+  draw(c, tl, width, plot_height(tl));
+  return img;
+}
+
+}  // namespace afford::render

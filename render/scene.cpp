@@ -1,0 +1,490 @@
+#include "scene.h"
+
+#include <GL/osmesa.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "mesh.h"
+
+namespace afford::render {
+namespace {
+
+using Eigen::Isometry3d;
+using Eigen::Vector3d;
+
+struct Colour {
+  float r, g, b, a = 1;
+};
+// The palette (before lighting).
+constexpr Colour kFixedArm{0.58f, 0.60f, 0.64f};
+constexpr Colour kMovingArm{0.33f, 0.48f, 0.72f};
+constexpr Colour kActee{0.78f, 0.55f, 0.30f};
+constexpr Colour kStressed{0.86f, 0.20f, 0.14f};
+constexpr Colour kInside{0.95f, 0.88f, 0.70f};
+constexpr Colour kThumb{0.92f, 0.45f, 0.35f};
+constexpr Colour kFinger{0.95f, 0.72f, 0.58f};
+constexpr Colour kHand{0.95f, 0.76f, 0.64f, 0.28f};
+constexpr Colour kObjectActeeContact{0.15f, 0.80f, 0.30f};
+constexpr Colour kAgentContact{0.10f, 0.65f, 0.95f};
+constexpr Colour kEffortArrow{0.98f, 0.62f, 0.05f};
+constexpr Colour kActeeArrow{0.85f, 0.10f, 0.10f};
+
+// Knuckles in the hand frame (engine/script.h: +x to the fingers, +y to the
+// thumb, the palm facing -z) and the palm box.
+const Vector3d kKnuckle[kFingers] = {{0.025, 0.040, -0.015},
+                                     {0.075, 0.025, -0.012},
+                                     {0.078, 0.006, -0.012},
+                                     {0.075, -0.013, -0.012},
+                                     {0.068, -0.030, -0.012}};
+const Vector3d kPalmCentre(0.040, -0.002, -0.004), kPalmSize(0.080, 0.080, 0.020);
+constexpr double kFingerRadius = 0.0075;  // m
+
+glm::mat4 projection_of(const Camera& c, double aspect, double near_m, double far_m) {
+  return glm::perspective(static_cast<float>(c.fov), static_cast<float>(aspect), static_cast<float>(near_m),
+                          static_cast<float>(far_m));
+}
+
+glm::vec3 vec(const Vector3d& v) { return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())}; }
+
+Vector3d usable_up(const Camera& c) {
+  const Vector3d view = (c.target - c.position).normalized();
+  if (c.up.cross(view).norm() > 1e-6) return c.up;
+  return std::abs(view.z()) < 0.9 ? Vector3d::UnitZ() : Vector3d::UnitY();
+}
+
+glm::mat4 view_of(const Camera& c) { return glm::lookAt(vec(c.position), vec(c.target), vec(usable_up(c))); }
+
+// Near and far planes around the target: generous, for the hand above the tool.
+void clip_planes(const Camera& c, double* near_m, double* far_m) {
+  const double d = (c.target - c.position).norm();
+  *near_m = std::max(1e-3, d * 0.05);
+  *far_m = d * 6 + 1;
+}
+
+void set_colour(const Colour& c) { glColor4f(c.r, c.g, c.b, c.a); }
+
+Colour mix(const Colour& a, const Colour& b, float t) {
+  return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t, a.a + (b.a - a.a) * t};
+}
+
+void draw(const Mesh& m) {
+  if (m.vertices() == 0) return;
+  glVertexPointer(3, GL_FLOAT, 0, m.pos.data());
+  glNormalPointer(GL_FLOAT, 0, m.nrm.data());
+  glDrawArrays(GL_TRIANGLES, 0, m.vertices());
+}
+
+void push_pose(const Isometry3d& pose) {
+  glPushMatrix();
+  const Eigen::Matrix4f m = pose.matrix().cast<float>();
+  glMultMatrixf(m.data());
+}
+
+}  // namespace
+
+Rgb actee_base_colour() {
+  return {static_cast<std::uint8_t>(kActee.r * 255 + 0.5f), static_cast<std::uint8_t>(kActee.g * 255 + 0.5f),
+          static_cast<std::uint8_t>(kActee.b * 255 + 0.5f)};
+}
+
+Eigen::AlignedBox3d scene_box(const Model& m, const State& s) {
+  Eigen::AlignedBox3d box;
+  const Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
+  auto add = [&box](const Geometry& g, const Isometry3d& pose) {
+    const Eigen::AlignedBox3d& b = g.local_box();
+    for (int i = 0; i < 8; ++i) box.extend(pose * b.corner(static_cast<Eigen::AlignedBox3d::CornerType>(i)));
+  };
+  for (const ModelPart& p : m.parts) add(p.geometry, (p.arm == Arm::moving ? moving : s.object_pose) * p.in_arm);
+  if (m.has_actee) add(m.actee(), s.actee_pose);
+  return box;
+}
+
+Camera frame_scene(const Model& m, const Eigen::AlignedBox3d& box, double aspect) {
+  Camera c;
+  const Eigen::Matrix3d r = m.object_start.linear();
+  const Vector3d centre = box.center();
+  const Vector3d back = (r * Vector3d(0, -0.55, 1)).normalized();  // from the target toward the eye
+  c.up = r * Vector3d::UnitY();
+  c.target = centre;
+  // The camera's axes; every corner must fit inside 90 % of the view.
+  const Vector3d fwd = -back;
+  const Vector3d right = fwd.cross(c.up).normalized();
+  const Vector3d up = right.cross(fwd);
+  const double ty = std::tan(c.fov / 2) * 0.9, tx = ty * std::max(aspect, 1e-3);
+  double dist = 1e-3;
+  for (int i = 0; i < 8; ++i) {
+    const Vector3d q = box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(i)) - centre;
+    const double depth = q.dot(fwd);  // toward the far side
+    dist = std::max({dist, std::abs(q.dot(right)) / tx - depth, std::abs(q.dot(up)) / ty - depth});
+  }
+  c.position = centre + back * dist;
+  return c;
+}
+
+double force_scale(const Model& m, const Eigen::AlignedBox3d& box) {
+  const double f = std::max({m.has_actee ? m.actee_limit : 0.0, m.has_agent ? m.max_force : 0.0, 1.0});
+  return 0.9 * (box.sizes().norm() / 2) / f;
+}
+
+Eigen::Vector2d project(const Camera& c, int w, int h, const Vector3d& world) {
+  double n, f;
+  clip_planes(c, &n, &f);
+  const glm::vec4 clip =
+      projection_of(c, static_cast<double>(w) / h, n, f) * view_of(c) * glm::vec4(vec(world), 1.0f);
+  const double x = clip.x / clip.w, y = clip.y / clip.w;
+  return {(x + 1) / 2 * w, (1 - y) / 2 * h};
+}
+
+struct Renderer::Impl {
+  OSMesaContext ctx = nullptr;
+  std::vector<unsigned char> buffer;  // RGBA, bottom row first
+  Mesh shape, shards, extra, unit_sphere;
+};
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
+  // One rasteriser thread: the same pixels on every run (and no contention
+  // with the simulation's own threads). The environment may override it.
+  setenv("LP_NUM_THREADS", "1", 0);
+  impl_->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
+  if (impl_->ctx == nullptr) throw RenderError("OSMesa cannot create an offscreen OpenGL context");
+  add_ellipsoid(impl_->unit_sphere, Vector3d::Ones(), 20, 10);
+}
+
+Renderer::~Renderer() {
+  if (impl_->ctx == nullptr) return;
+  if (OSMesaGetCurrentContext() == impl_->ctx) OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  OSMesaDestroyContext(impl_->ctx);
+}
+
+Image Renderer::render(const Model& m, const State& s, const Camera& camera, const RenderOptions& o) {
+  const int ss = std::clamp(o.supersample, 1, 4);
+  const int w = o.width * ss, h = o.height * ss;
+  if (o.width <= 0 || o.height <= 0 || w > 8192 || h > 8192) throw RenderError("image size out of range");
+  Impl& im = *impl_;
+  im.buffer.resize(static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
+  if (!OSMesaMakeCurrent(im.ctx, im.buffer.data(), GL_UNSIGNED_BYTE, w, h)) {
+    throw RenderError("OSMesa cannot make its context current");
+  }
+  const Eigen::AlignedBox3d box = scene_box(m, s);
+  const double scene = std::max(box.sizes().norm() / 2, 0.02);  // m, a length for markers and arrows
+
+  glViewport(0, 0, w, h);
+  glDisable(GL_DITHER);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  // Background: a soft vertical gradient.
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_LIGHTING);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glBegin(GL_QUADS);
+  glColor3f(0.80f, 0.84f, 0.89f);
+  glVertex2f(-1, -1);
+  glVertex2f(1, -1);
+  glColor3f(0.97f, 0.98f, 0.99f);
+  glVertex2f(1, 1);
+  glVertex2f(-1, 1);
+  glEnd();
+
+  double near_m, far_m;
+  clip_planes(camera, &near_m, &far_m);
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixf(glm::value_ptr(projection_of(camera, static_cast<double>(w) / h, near_m, far_m)));
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+
+  // Lights in eye space: a key light from the upper left, a fill from the right.
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_LIGHT1);
+  const GLfloat key_pos[] = {-0.45f, 0.6f, 1.0f, 0}, key_diffuse[] = {0.78f, 0.78f, 0.76f, 1},
+                key_spec[] = {0.35f, 0.35f, 0.35f, 1};
+  const GLfloat fill_pos[] = {0.7f, -0.2f, 0.6f, 0}, fill_diffuse[] = {0.28f, 0.30f, 0.34f, 1},
+                none[] = {0, 0, 0, 1};
+  const GLfloat ambient[] = {0.30f, 0.30f, 0.32f, 1};
+  glLightfv(GL_LIGHT0, GL_POSITION, key_pos);
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, key_diffuse);
+  glLightfv(GL_LIGHT0, GL_SPECULAR, key_spec);
+  glLightfv(GL_LIGHT1, GL_POSITION, fill_pos);
+  glLightfv(GL_LIGHT1, GL_DIFFUSE, fill_diffuse);
+  glLightfv(GL_LIGHT1, GL_SPECULAR, none);
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+  glEnable(GL_COLOR_MATERIAL);
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  const GLfloat spec[] = {0.25f, 0.25f, 0.25f, 1};
+  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
+  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 40);
+  glEnable(GL_NORMALIZE);
+  glShadeModel(GL_SMOOTH);
+
+  glLoadMatrixf(glm::value_ptr(view_of(camera)));
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+
+  // Ground: a pale plane with a grid, under everything.
+  if (o.ground) {
+    glDisable(GL_LIGHTING);
+    const double step = box.sizes().maxCoeff() > 0.4 ? 0.05 : 0.01;
+    const Vector3d c = box.center();
+    const double half = std::ceil(std::max(box.sizes().x(), box.sizes().y()) * 1.5 / step) * step;
+    const double x0 = std::floor((c.x() - half) / step) * step, y0 = std::floor((c.y() - half) / step) * step;
+    const double z = o.ground_z;
+    const int n = static_cast<int>(std::lround(2 * half / step));
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1, 1);
+    glDisable(GL_CULL_FACE);
+    glBegin(GL_QUADS);
+    glColor3f(0.90f, 0.91f, 0.93f);
+    glVertex3d(x0, y0, z);
+    glVertex3d(x0 + n * step, y0, z);
+    glVertex3d(x0 + n * step, y0 + n * step, z);
+    glVertex3d(x0, y0 + n * step, z);
+    glEnd();
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glLineWidth(static_cast<float>(ss));
+    glBegin(GL_LINES);
+    glColor3f(0.76f, 0.79f, 0.84f);
+    for (int i = 0; i <= n; ++i) {
+      glVertex3d(x0 + i * step, y0, z);
+      glVertex3d(x0 + i * step, y0 + n * step, z);
+      glVertex3d(x0, y0 + i * step, z);
+      glVertex3d(x0 + n * step, y0 + i * step, z);
+    }
+    glEnd();
+    glEnable(GL_CULL_FACE);
+    glEnable(GL_LIGHTING);
+  }
+
+  // The acting object: every part on its arm.
+  const Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
+  for (const ModelPart& p : m.parts) {
+    im.shape.clear();
+    add_shape(im.shape, p.geometry);
+    set_colour(p.arm == Arm::moving ? kMovingArm : kFixedArm);
+    push_pose((p.arm == Arm::moving ? moving : s.object_pose) * p.in_arm);
+    draw(im.shape);
+    glPopMatrix();
+  }
+
+  // The actee.
+  if (m.has_actee) {
+    im.shape.clear();
+    add_shape(im.shape, m.actee());
+    const double load = m.actee_limit > 0 ? std::clamp(s.actee_load / m.actee_limit, 0.0, 1.0) : 0.0;
+    push_pose(s.actee_pose);
+    if (s.condition == ActeeCondition::broken) {
+      const double size = m.actee().local_box().sizes().minCoeff();
+      shatter(im.shape, 0.13 * size, im.shards);
+      glCullFace(GL_FRONT);  // the inside of the shell, through the cracks
+      set_colour(kInside);
+      draw(im.shards);
+      glCullFace(GL_BACK);
+      const Colour dark = mix(kActee, Colour{0.22f, 0.14f, 0.07f}, 0.55f);
+      set_colour(dark);
+      draw(im.shards);
+    } else {
+      // Flattened along A_d by the compression (half from each side),
+      // widened across it to keep the volume.
+      const Vector3d d = m.actee_direction.normalized();
+      const double extent = std::max(m.actee().support(d), 1e-4);
+      const double k = std::clamp(1 - s.actee_compression / (2 * extent), 0.3, 1.0);
+      const double across = 1 / std::sqrt(k);
+      Eigen::Matrix4f squash = Eigen::Matrix4f::Identity();
+      squash.topLeftCorner<3, 3>() =
+          (across * Eigen::Matrix3d::Identity() + (k - across) * d * d.transpose()).cast<float>();
+      glMultMatrixf(squash.data());
+      const float tint = static_cast<float>(0.65 * load);
+      set_colour(mix(kActee, kStressed, tint));
+      draw(im.shape);
+    }
+    glPopMatrix();
+  }
+
+  // Fingertips, opaque; the thumb in a deeper colour.
+  if (m.has_agent) {
+    for (int f = 0; f < kFingers; ++f) {
+      const double r = m.tip_radius[static_cast<size_t>(f)];
+      set_colour(f == 0 ? kThumb : kFinger);
+      glPushMatrix();
+      const Vector3d& p = s.fingertip[static_cast<size_t>(f)];
+      glTranslated(p.x(), p.y(), p.z());
+      glScaled(r, r, r);
+      draw(im.unit_sphere);
+      glPopMatrix();
+    }
+  }
+
+  // The guides: lines (the advantage map) with depth, surfaces translucent.
+  std::vector<GuideLabel> labels;
+  if (o.guides != nullptr) {
+    const Guides g = posed_guides(*o.guides, s.theta, s.object_pose);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_CULL_FACE);
+    glLineWidth(static_cast<float>(3 * ss));
+    glBegin(GL_LINES);
+    for (const GuideSegment& seg : g.segments) {
+      glColor4d(seg.colour.r, seg.colour.g, seg.colour.b, 1);
+      glVertex3d(seg.a.x(), seg.a.y(), seg.a.z());
+      glVertex3d(seg.b.x(), seg.b.y(), seg.b.z());
+    }
+    glEnd();
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    glBegin(GL_TRIANGLES);
+    for (const GuideMesh& mesh : g.meshes) {
+      glColor4d(mesh.colour.r, mesh.colour.g, mesh.colour.b, mesh.colour.a);
+      for (const std::array<int, 3>& t : mesh.triangles) {
+        for (int k : t) {
+          const Vector3d& v = mesh.vertices[static_cast<size_t>(k)];
+          glVertex3d(v.x(), v.y(), v.z());
+        }
+      }
+    }
+    glEnd();
+    glBegin(GL_QUADS);
+    for (const GuideRect& r : g.rects) {
+      glColor4d(r.colour.r, r.colour.g, r.colour.b, r.colour.a);
+      for (const auto& [a, b] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
+        const Vector3d v = r.centre + a * r.half_u * r.u + b * r.half_v * r.v;
+        glVertex3d(v.x(), v.y(), v.z());
+      }
+    }
+    glEnd();
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glEnable(GL_CULL_FACE);
+    glEnable(GL_LIGHTING);
+    labels = g.labels;
+  }
+
+  // Contact points and force arrows (drawn over the bodies they sit in).
+  if (o.contacts || o.forces) glClear(GL_DEPTH_BUFFER_BIT);
+  if (o.contacts) {
+    const double r = scene * 0.022;
+    auto markers = [&](const ContactSet& set, const Colour& c) {
+      set_colour(c);
+      for (int i = 0; i < std::min(set.count, kMaxContacts); ++i) {
+        const Vector3d& p = set.point[static_cast<size_t>(i)].point;
+        glPushMatrix();
+        glTranslated(p.x(), p.y(), p.z());
+        glScaled(r, r, r);
+        draw(im.unit_sphere);
+        glPopMatrix();
+      }
+    };
+    markers(s.agent_object, kAgentContact);
+    markers(s.agent_actee, kAgentContact);
+    markers(s.object_actee, kObjectActeeContact);
+  }
+  if (o.forces) {
+    const double per_newton = o.force_scale > 0 ? o.force_scale : force_scale(m, box);
+    // Proportional to the force; a small force still gets a visible arrow.
+    const double max_len = scene * 1.2, min_len = scene * 0.08, radius = scene * 0.012;
+    if (s.grasped && s.effort_force > 1e-3) {
+      const Vector3d dir = (s.object_pose.linear() * s.closing_direction).normalized();
+      const double len = std::clamp(s.effort_force * per_newton, min_len, max_len);
+      im.extra.clear();
+      add_arrow(im.extra, s.thumb_proxy - dir * (len + m.tip_radius[0]), s.thumb_proxy - dir * m.tip_radius[0],
+                radius);
+      set_colour(kEffortArrow);
+      draw(im.extra);
+    }
+    if (m.has_actee && s.actee_force > 1e-3 && s.condition != ActeeCondition::broken) {
+      const double len = std::clamp(s.actee_force * per_newton, min_len, max_len);
+      const Vector3d centre = s.actee_pose.translation();
+      im.extra.clear();
+      for (int i = 0; i < std::min(s.object_actee.count, kMaxContacts); ++i) {
+        const ContactPoint& c = s.object_actee.point[static_cast<size_t>(i)];
+        Vector3d out = c.normal;
+        if (out.dot(c.point - centre) < 0) out = -out;  // away from the actee: the jaw pushes inward
+        add_arrow(im.extra, c.point + out * len, c.point, radius);
+      }
+      set_colour(kActeeArrow);
+      draw(im.extra);
+    }
+  }
+
+  // The hand, translucent, last: the palm box and straight fingers to the tips.
+  if (o.hand && m.has_agent) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    im.extra.clear();
+    add_box(im.extra, kPalmSize, kPalmCentre);
+    for (int f = 0; f < kFingers; ++f) {
+      const Vector3d knuckle = s.hand * kKnuckle[f];
+      const Vector3d tip = s.fingertip[static_cast<size_t>(f)];
+      const Vector3d along = tip - knuckle;
+      if (along.norm() > 1e-3) add_tube(im.extra, s.hand.inverse() * knuckle, s.hand.inverse() * (tip - along.normalized() * m.tip_radius[static_cast<size_t>(f)] * 0.5), kFingerRadius);
+    }
+    set_colour(kHand);
+    push_pose(s.hand);
+    draw(im.extra);
+    glPopMatrix();
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  }
+
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glFinish();
+
+  // RGBA bottom-up -> RGB top-down, then the supersampled average.
+  Image big(w, h);
+  for (int y = 0; y < h; ++y) {
+    const unsigned char* src = &im.buffer[static_cast<size_t>(h - 1 - y) * static_cast<size_t>(w) * 4];
+    std::uint8_t* dst = &big.rgb[static_cast<size_t>(y) * static_cast<size_t>(w) * 3];
+    for (int x = 0; x < w; ++x) {
+      dst[3 * x] = src[4 * x];
+      dst[3 * x + 1] = src[4 * x + 1];
+      dst[3 * x + 2] = src[4 * x + 2];
+    }
+  }
+  Image out = downsample(big, ss);
+  // Guide labels, at their anchors, moved down past the ones already placed.
+  std::vector<Eigen::AlignedBox2i> placed;
+  for (const GuideLabel& l : labels) {
+    const Eigen::Vector2d p = project(camera, o.width, o.height, l.anchor);
+    auto u8 = [](double v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
+    const int scale = o.width >= 480 ? 2 : 1;
+    const Rgb fg{u8(l.colour.r), u8(l.colour.g), u8(l.colour.b)};
+    // Light colours on a dark box, dark ones on a white box; kept inside the picture.
+    const bool light = 0.3 * fg.r + 0.59 * fg.g + 0.11 * fg.b > 150;
+    const int tw = text_width(l.text, scale);
+    const int x = std::clamp(static_cast<int>(p.x()) + 4 * scale, 2 * scale, std::max(2 * scale, o.width - tw - 2 * scale));
+    int y = std::clamp(static_cast<int>(p.y()) - 3 * scale, 2 * scale, std::max(2 * scale, o.height - 10 * scale));
+    const int lh = (kGlyphHeight + 3) * scale;
+    for (int tries = 0; tries < 8; ++tries) {
+      const Eigen::AlignedBox2i here(Eigen::Vector2i(x, y), Eigen::Vector2i(x + tw, y + lh));
+      bool clear = true;
+      for (const Eigen::AlignedBox2i& b : placed) clear = clear && !b.intersects(here);
+      if (clear) break;
+      y += lh;
+    }
+    placed.emplace_back(Eigen::Vector2i(x, y), Eigen::Vector2i(x + tw, y + lh));
+    draw_label(out, x, y, l.text, fg, light ? Rgb{40, 44, 54} : Rgb{255, 255, 255}, scale, scale + 1);
+  }
+  return out;
+}
+
+}  // namespace afford::render
+
+// Mesa's OSMesa keeps a few hundred bytes per context for the life of the
+// process (a framebuffer the context was made current with); LeakSanitizer
+// (the AFFORD_SANITIZE build) is told that these are not ours. The hook is
+// only read by the sanitizer runtime.
+extern "C" const char* __lsan_default_suppressions();
+extern "C" const char* __lsan_default_suppressions() { return "leak:libOSMesa.so\n"; }

@@ -1,0 +1,60 @@
+// `afford render`: a whole session to pictures. Runs the session twice
+// (deterministic, so both runs are the same): first to find the box the
+// tool and the actee sweep (the default camera frames all of it), then to
+// render frames at a fixed rate with a text overlay, the key moments (the
+// start, each inferred function, each change of the number of tool-actee
+// contacts, the break) into a contact sheet, and the timeline plot.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "image.h"
+#include "scene.h"
+#include "session.h"
+
+namespace afford::render {
+
+struct RenderSessionOptions {
+  std::string out_dir;        // created if missing
+  double fps = 30;            // frames per second of session time
+  int width = 640, height = 480;
+  int supersample = 2;
+  bool frames = true;         // write frame_NNNNN.png
+  bool mp4 = true;            // and session.mp4 through ffmpeg, when on PATH
+  int max_moments = 16;       // tiles on the contact sheet
+  const Guides* guides = nullptr;  // drawn in every picture when set (not owned)
+  // Draws extra content (the guides) into each rendered picture, after
+  // the scene: given the image, the camera and the state.
+  std::function<void(Image&, const Camera&, const State&)> overlay;
+};
+
+struct KeyMoment {
+  double t = 0;       // s
+  std::string what;   // "pinch inferred", "actee contacts 0 -> 2", "walnut broke"; moments of one frame joined by ", "
+  Image tile;
+};
+
+struct RenderSessionResult {
+  int frames = 0;                  // PNG frames written
+  std::vector<KeyMoment> moments;  // on the contact sheet, in time order
+  std::vector<std::string> files;  // every file written
+  std::string note;                // e.g. why there is no MP4
+};
+
+RenderSessionResult render_session(const CompiledSession& session, const RenderSessionOptions& options);
+
+// The camera render_session uses: the session's `camera:` if given, else
+// one that frames everything the tool and the actee sweep in the session;
+// `ground_z` gets the height of the grid under it (m, world).
+Camera session_camera(const CompiledSession& session, double aspect, double* ground_z);
+
+// The text overlay of a frame: time, angle, forces, the actee's condition,
+// and the functions inferred so far.
+void draw_overlay(Image& img, const Model& model, const State& state, const std::vector<std::string>& inferred);
+
+// Whether an executable is on PATH.
+bool on_path(const std::string& program);
+
+}  // namespace afford::render

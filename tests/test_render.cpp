@@ -1,0 +1,362 @@
+// Offscreen rendering (render/): PNG by hand, fixed scenes against stored
+// reference images, determinism, the actee where it must be, the timeline
+// plot, the contact sheet's key moments, the session's camera.
+//
+// Reference images live in tests/data/render/. After an intended change of
+// the pictures, regenerate them with
+//   AFFORD_UPDATE_REFERENCES=1 ./afford_tests --gtest_filter='Render*'
+// (from the build folder), look at them, and commit them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "errors.h"
+#include "guides.h"
+#include "plot.h"
+#include "png.h"
+#include "run.h"
+#include "scene.h"
+#include "scripted_agent.h"
+#include "session.h"
+#include "session_render.h"
+#include "test_util.h"
+
+namespace afford {
+namespace {
+
+namespace fs = std::filesystem;
+using render::Image;
+
+const std::string kSource = AFFORD_SOURCE_DIR;
+const std::string kReferences = kSource + "/tests/data/render/";
+
+const CompiledSession& nutcracker() {
+  static const CompiledSession s = load_session(kSource + "/sessions/paper-nutcracker.yaml");
+  return s;
+}
+
+// The session's state after its frames up to time t (s).
+std::unique_ptr<State> state_at(const CompiledSession& s, double t) {
+  std::unique_ptr<State> state = make_state(s.model);
+  ScriptedAgent agent(s.script);
+  Sample sample;
+  for (std::int64_t k = 1; static_cast<double>(k) * s.model.timestep <= t + 1e-9; ++k) {
+    const double tk = static_cast<double>(k) * s.model.timestep;
+    agent.sample_at(tk, &sample);
+    sample.t = tk;
+    step(s.model, *state, sample);
+  }
+  return state;
+}
+
+// One camera for every test scene: the tool and the walnut at rest.
+render::Camera test_camera(double aspect) {
+  const std::unique_ptr<State> rest = make_state(nutcracker().model);
+  return render::frame_scene(nutcracker().model, render::scene_box(nutcracker().model, *rest), aspect);
+}
+
+render::RenderOptions small() {
+  render::RenderOptions o;
+  o.width = 160;
+  o.height = 120;
+  o.ground_z = 0.09;
+  return o;
+}
+
+Image render_at(render::Renderer& r, double t) {
+  const std::unique_ptr<State> s = state_at(nutcracker(), t);
+  return r.render(nutcracker().model, *s, test_camera(160.0 / 120), small());
+}
+
+struct Difference {
+  double mean = 0;         // mean absolute difference per channel, 0..255
+  double differing = 0;    // fraction of pixels with a channel off by more than 32
+};
+
+Difference compare(const Image& a, const Image& b) {
+  Difference d;
+  size_t off = 0;
+  double sum = 0;
+  for (size_t i = 0; i < a.rgb.size(); i += 3) {
+    int worst = 0;
+    for (size_t c = 0; c < 3; ++c) {
+      const int e = std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c]));
+      sum += e;
+      worst = std::max(worst, e);
+    }
+    if (worst > 32) ++off;
+  }
+  d.mean = sum / static_cast<double>(a.rgb.size());
+  d.differing = static_cast<double>(off) / static_cast<double>(a.rgb.size() / 3);
+  return d;
+}
+
+// Compares with tests/data/render/<name>.png (or writes it, see the top).
+void expect_reference(const Image& img, const std::string& name) {
+  const std::string path = kReferences + name + ".png";
+  if (std::getenv("AFFORD_UPDATE_REFERENCES") != nullptr) {
+    render::write_png(path, img);
+    GTEST_SKIP() << "wrote " << path;
+  }
+  const Image ref = render::read_png(path);
+  ASSERT_EQ(ref.width, img.width);
+  ASSERT_EQ(ref.height, img.height);
+  const Difference d = compare(img, ref);
+  EXPECT_LE(d.mean, 3.0) << name << ": mean absolute difference";
+  EXPECT_LE(d.differing, 0.02) << name << ": fraction of pixels off by more than 32";
+  if (d.mean > 3.0 || d.differing > 0.02) {
+    const std::string got = (fs::temp_directory_path() / ("afford-" + name + "-got.png")).string();
+    render::write_png(got, img);
+    ADD_FAILURE() << "the picture differs from " << path << "; this run's is " << got;
+  }
+}
+
+// ---------------------------------------------------------------- PNG
+
+TEST(RenderPng, ChecksumsMatchTheirStandards) {
+  const std::string digits = "123456789";
+  const auto* p = reinterpret_cast<const std::uint8_t*>(digits.data());
+  EXPECT_EQ(render::crc32(p, digits.size()), 0xCBF43926u);
+  const std::string wiki = "Wikipedia";
+  EXPECT_EQ(render::adler32(reinterpret_cast<const std::uint8_t*>(wiki.data()), wiki.size()), 0x11E60398u);
+}
+
+TEST(RenderPng, RoundTripsAcrossManyStoredBlocks) {
+  Image img(301, 257);  // 301*3+1 bytes a row: several 64 KiB blocks, none aligned
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = 0; x < img.width; ++x) {
+      img.set(x, y, {static_cast<std::uint8_t>(x * 7 + y), static_cast<std::uint8_t>(y * 3),
+                     static_cast<std::uint8_t>((x ^ y) & 0xFF)});
+    }
+  }
+  const std::vector<std::uint8_t> bytes = render::encode_png(img);
+  const Image back = render::decode_png(bytes);
+  EXPECT_EQ(back.width, 301);
+  EXPECT_EQ(back.height, 257);
+  EXPECT_EQ(back.rgb, img.rgb);
+  // And through a file.
+  const std::string path = (fs::temp_directory_path() / "afford-roundtrip.png").string();
+  render::write_png(path, img);
+  EXPECT_EQ(render::read_png(path).rgb, img.rgb);
+  fs::remove(path);
+}
+
+TEST(RenderPng, RejectsCorruptFiles) {
+  std::vector<std::uint8_t> bytes = render::encode_png(Image(8, 8, {10, 20, 30}));
+  std::vector<std::uint8_t> bad = bytes;
+  bad[bad.size() / 2] ^= 0x40;  // inside IDAT: the CRC no longer matches
+  EXPECT_THROW(render::decode_png(bad), render::PngError);
+  bad = bytes;
+  bad[0] = 'x';
+  EXPECT_THROW(render::decode_png(bad), render::PngError);
+  bad.assign(bytes.begin(), bytes.begin() + 40);
+  EXPECT_THROW(render::decode_png(bad), render::PngError);
+}
+
+TEST(RenderFont, DrawsEveryPrintableCharacter) {
+  for (char c = 33; c < 127; ++c) {
+    Image img(8, 10, {0, 0, 0});
+    render::draw_text(img, 1, 0, std::string(1, c), {255, 255, 255});
+    int lit = 0;
+    for (size_t i = 0; i < img.rgb.size(); i += 3) lit += img.rgb[i] > 0;
+    EXPECT_GT(lit, 0) << "'" << c << "' has no pixels";
+  }
+  EXPECT_EQ(render::text_width("abc", 2), (3 * 6 - 1) * 2);
+}
+
+// ---------------------------------------------------------------- scenes
+
+TEST(RenderScene, IdenticalInputGivesIdenticalPixels) {
+  render::Renderer a, b;
+  const Image first = render_at(a, 2.0);
+  const Image again = render_at(a, 2.0);
+  const Image other = render_at(b, 2.0);
+  EXPECT_EQ(render::encode_png(first), render::encode_png(again));
+  EXPECT_EQ(render::encode_png(first), render::encode_png(other));
+}
+
+TEST(RenderScene, NutcrackerAtRestMatchesItsReference) {
+  render::Renderer r;
+  expect_reference(render_at(r, 0.4), "nutcracker_rest");
+}
+
+TEST(RenderScene, NutcrackerMidSqueezeMatchesItsReference) {
+  render::Renderer r;
+  expect_reference(render_at(r, 2.0), "nutcracker_squeeze");
+}
+
+TEST(RenderScene, NutcrackerBrokenWalnutMatchesItsReference) {
+  render::Renderer r;
+  expect_reference(render_at(r, 3.2), "nutcracker_broken");
+}
+
+// The pixel at the walnut's projected centre has the walnut's warm colour
+// (red above green above blue), at rest and mid-squeeze.
+TEST(RenderScene, ActeeIsAtItsProjectedCentre) {
+  render::Renderer r;
+  for (double t : {0.4, 2.0}) {
+    const std::unique_ptr<State> s = state_at(nutcracker(), t);
+    const render::Camera cam = test_camera(160.0 / 120);
+    const Image img = r.render(nutcracker().model, *s, cam, small());
+    const Eigen::Vector2d p = render::project(cam, 160, 120, s->actee_pose.translation());
+    const render::Rgb c = img.at(static_cast<int>(p.x()), static_cast<int>(p.y()));
+    EXPECT_GT(c.r, c.g) << "t = " << t;
+    EXPECT_GT(int(c.g), int(c.b)) << "t = " << t;
+    EXPECT_GT(int(c.r) - int(c.b), 60) << "t = " << t;
+    // Away from the tool, in a corner, the background: grey-blue and bright.
+    const render::Rgb bg = img.at(2, 2);
+    EXPECT_GE(int(bg.b), int(bg.r)) << "t = " << t;
+    EXPECT_GT(int(bg.r), 150) << "t = " << t;
+  }
+  // The base colour itself is the one the palette promises.
+  EXPECT_GT(render::actee_base_colour().r, render::actee_base_colour().b);
+}
+
+TEST(RenderScene, FramedSceneFitsTheTool) {
+  const std::unique_ptr<State> s = make_state(nutcracker().model);
+  const Eigen::AlignedBox3d box = render::scene_box(nutcracker().model, *s);
+  const render::Camera cam = render::frame_scene(nutcracker().model, box, 4.0 / 3);
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector2d p = render::project(cam, 640, 480, box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(i)));
+    EXPECT_GE(p.x(), 0);
+    EXPECT_LE(p.x(), 640);
+    EXPECT_GE(p.y(), 0);
+    EXPECT_LE(p.y(), 480);
+  }
+}
+
+// The guides (engine/guides.h) appear where they must: the advantage map's
+// segments in their colours, the symmetry plane tinting the view with its
+// colour.
+TEST(RenderScene, GuidesAppearWhereTheyMust) {
+  const CompiledSession& s = nutcracker();
+  const Guides guides = compute_guides(s.model, load_guides(kSource + "/rules/guides.yaml"));
+  const std::unique_ptr<State> state = state_at(s, 0.4);
+  const render::Camera cam = test_camera(4.0 / 3);
+  render::RenderOptions o;
+  o.width = 320;
+  o.height = 240;
+  o.hand = false;
+  o.ground_z = 0.09;
+  render::Renderer r;
+  const Image plain = r.render(s.model, *state, cam, o);
+  o.guides = &guides;
+  const Image with = r.render(s.model, *state, cam, o);
+  const Guides posed = posed_guides(guides, state->theta, state->object_pose);
+
+  int seen = 0, segments = 0;
+  for (const GuideSegment& seg : posed.segments) {
+    ++segments;
+    const Eigen::Vector2d p = render::project(cam, o.width, o.height, (seg.a + seg.b) / 2);
+    const render::Rgb c = with.at(static_cast<int>(p.x()), static_cast<int>(p.y()));
+    const int d = std::max({std::abs(c.r - int(std::lround(seg.colour.r * 255))),
+                            std::abs(c.g - int(std::lround(seg.colour.g * 255))),
+                            std::abs(c.b - int(std::lround(seg.colour.b * 255)))});
+    seen += d < 60;
+  }
+  ASSERT_GT(segments, 10);
+  EXPECT_GE(seen, segments / 3) << seen << " of " << segments << " advantage segments show their colour";
+
+  const int plane = guides.find("stable_orientation");
+  ASSERT_GE(plane, 0);
+  int tinted = 0, rects = 0;
+  for (const GuideRect& rect : posed.rects) {
+    if (rect.guide != plane) continue;
+    ++rects;
+    const Eigen::Vector3d corner = rect.centre + 0.85 * rect.half_u * rect.u + 0.85 * rect.half_v * rect.v;
+    const Eigen::Vector2d p = render::project(cam, o.width, o.height, corner);
+    const render::Rgb a = plain.at(static_cast<int>(p.x()), static_cast<int>(p.y()));
+    const render::Rgb b = with.at(static_cast<int>(p.x()), static_cast<int>(p.y()));
+    tinted += (int(b.b) - int(b.r)) > (int(a.b) - int(a.r)) + 10;
+  }
+  EXPECT_EQ(rects, 1);
+  EXPECT_EQ(tinted, rects);
+}
+
+// ---------------------------------------------------------------- plot, sheet, camera
+
+TEST(RenderPlot, SvgHasAxesCurvesLegendAndInferences) {
+  const CompiledSession& s = nutcracker();
+  render::TimelineRecorder rec(s.name);
+  Observer* const obs[] = {&rec};
+  ScriptedAgent agent(s.script);
+  run_session(s.model, *s.rules, agent, obs);
+  const std::string svg = render::plot_svg(rec.timeline());
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  size_t polylines = 0;
+  for (size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) ++polylines;
+  EXPECT_EQ(polylines, 3u) << "angle, effort force, actee force";
+  for (const char* text : {"angle [deg]", "force [N]", "time [s]", "actee limit", "effort force", "actee force",
+                           "node reached", "node lost", ">pinch ", ">hold ", ">crash "}) {
+    EXPECT_NE(svg.find(text), std::string::npos) << text;
+  }
+  const Image png = render::plot_png(rec.timeline());
+  EXPECT_EQ(png.width, 1100);
+  EXPECT_EQ(png.height, render::plot_height(rec.timeline()));
+}
+
+TEST(RenderSession, ContactSheetHasTheKeyMoments) {
+  const std::string dir = (fs::temp_directory_path() / "afford-render-session").string();
+  fs::remove_all(dir);
+  render::RenderSessionOptions o;
+  o.out_dir = dir;
+  o.frames = false;
+  o.width = 320;
+  o.height = 240;
+  o.supersample = 1;
+  const render::RenderSessionResult r = render::render_session(nutcracker(), o);
+  std::string all;
+  for (const render::KeyMoment& k : r.moments) all += k.what + "\n";
+  for (const char* what : {"start", "pinch inferred", "hold inferred", "crash inferred", "walnut broke",
+                           "actee contacts 1 -> 2", "end"}) {
+    EXPECT_NE(all.find(what), std::string::npos) << what << " in\n" << all;
+  }
+  for (const char* f : {"contact_sheet.png", "timeline.png", "timeline.svg"}) {
+    EXPECT_TRUE(fs::is_regular_file(fs::path(dir) / f)) << f;
+  }
+  EXPECT_EQ(r.frames, 0);
+  fs::remove_all(dir);
+}
+
+TEST(RenderSession, CameraKeyIsReadAndChecked) {
+  const std::string dir = (fs::temp_directory_path() / "afford-camera").string();
+  fs::create_directories(dir);
+  std::ifstream in(kSource + "/sessions/paper-nutcracker.yaml");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string text = buf.str();
+  for (const char* rel : {"../objects/", "../actees/", "../agents/", "../rules/"}) {
+    for (size_t at = text.find(rel); at != std::string::npos; at = text.find(rel)) {
+      text.replace(at, 3, kSource + "/");
+    }
+  }
+  const std::string good = test::replace_once(
+      text, "script:\n", "camera: {position: [100 mm, -300 mm, 400 mm], target: [90 mm, 0 mm, 100 mm], fov: 30 deg}\nscript:\n");
+  std::ofstream(dir + "/good.yaml") << good;
+  const CompiledSession s = load_session(dir + "/good.yaml");
+  EXPECT_TRUE(s.camera.set);
+  EXPECT_NEAR(s.camera.fov, 30 * std::numbers::pi / 180, 1e-12);
+  EXPECT_NEAR(s.camera.target.x(), 0.09, 1e-12);
+  const render::Camera cam = render::session_camera(s, 4.0 / 3, nullptr);
+  EXPECT_NEAR(cam.position.z(), 0.4, 1e-12);
+
+  const std::string bad = test::replace_once(
+      text, "script:\n", "camera: {position: [1 mm, 0 mm, 4 mm], target: [1 mm, 0 mm, 4 mm], fvo: 30 deg}\nscript:\n");
+  std::ofstream(dir + "/bad.yaml") << bad;
+  try {
+    load_session(dir + "/bad.yaml");
+    ADD_FAILURE() << "expected a DataError";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("fvo"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace afford
