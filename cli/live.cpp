@@ -8,10 +8,12 @@
 // Inferred functions are printed as they happen; at the end, why the
 // session ended, the reports received and those skipped, by reason. If the
 // device disappears the session ends cleanly, says so, and keeps what was
-// recorded. Ctrl-C ends it the same way.
+// recorded. Ctrl-C ends it the same way. The session is always recorded
+// (to --record FILE, default out/<session>/live.afrec).
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -92,8 +94,17 @@ int run_live(const Args& args) {
     std::cerr << "afford: " << error << "\n";
     return 1;
   }
+  // A live session is always recorded: to --record FILE, or by default to
+  // out/<session>/live.afrec.
+  if (record.empty()) {
+    const std::filesystem::path dir = std::filesystem::path("out") / session.name;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
+    record = (dir / "live.afrec").string();
+  }
   std::optional<Recorder> recorder;
-  if (!record.empty()) recorder.emplace(record, session, "device " + device.name + " (" + device_file + ")");
+  recorder.emplace(record, session, "device " + device.name + " (" + device_file + ")");
 
   ReportDecoder decoder(device, session.model);
   UsbSampleStream stream(*usb, decoder);
