@@ -15,7 +15,9 @@ class Observer {
   // Before the first frame, with the state at rest (allocate here).
   virtual void on_start(const Model&, const State&, const RuleSet&) {}
   // After each frame's step and evaluate; the frame's events are in
-  // events_begin(rs)..events_end(rs). Must not allocate.
+  // events_begin(rs)..events_end(rs). The frame itself allocates nothing;
+  // the trace, timeline and recorder observers keep it so, a renderer
+  // (render/) allocates its images here.
   virtual void on_frame(const Model& model, const State& state, const RuleSet& rules, const RuleState& rs) = 0;
   // After the last frame.
   virtual void on_end(const Model&, const State&, const RuleSet&, const RuleState&) {}
