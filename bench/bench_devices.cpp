@@ -22,16 +22,7 @@ namespace {
 
 const std::string kSource = AFFORD_SOURCE_DIR;
 
-Model hand_model() {
-  const AgentSpec a = load_agent(kSource + "/agents/hand.yaml");
-  Model m;
-  m.has_agent = true;
-  for (int f = 0; f < kFingers; ++f) {
-    m.joint_min[f] = a.fingers[f].joint_min;
-    m.joint_max[f] = a.fingers[f].joint_max;
-  }
-  return m;
-}
+Model hand_model() { return compile_agent_only(load_agent(kSource + "/agents/hand.yaml")); }
 
 std::vector<std::uint8_t> glove_report(int k) {
   std::vector<std::uint8_t> r(64, 0);

@@ -127,6 +127,12 @@ Model compile(const ObjectSpec& object, const ActeeSpec* actee, const AgentSpec*
   return m;
 }
 
+Model compile_agent_only(const AgentSpec& agent) {
+  Model m;
+  compile_agent(agent, m);
+  return m;
+}
+
 Eigen::Isometry3d moving_arm_pose(double theta_rad) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = Eigen::AngleAxisd(theta_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();

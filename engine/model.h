@@ -110,6 +110,10 @@ struct Model {
 Model compile(const ObjectSpec& object, const ActeeSpec* actee, const AgentSpec* agent,
               const ModelOptions& options);
 
+// A model of the hand alone (no object, no actee): what a device's report
+// decoder checks samples against. Not for step().
+Model compile_agent_only(const AgentSpec& agent);
+
 // Pose of the moving arm's frame in the object frame at opening angle theta.
 Eigen::Isometry3d moving_arm_pose(double theta_rad);
 

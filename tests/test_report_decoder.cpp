@@ -20,17 +20,7 @@ using ::testing::HasSubstr;
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-// A model with only the hand's joint ranges (what the decoder checks).
-Model hand_model() {
-  const AgentSpec a = load_agent(AFFORD_SOURCE_DIR "/agents/hand.yaml");
-  Model m;
-  m.has_agent = true;
-  for (int f = 0; f < kFingers; ++f) {
-    m.joint_min[f] = a.fingers[f].joint_min;
-    m.joint_max[f] = a.fingers[f].joint_max;
-  }
-  return m;
-}
+Model hand_model() { return compile_agent_only(load_agent(AFFORD_SOURCE_DIR "/agents/hand.yaml")); }
 
 const char* const kSmall = R"(device: small
 description: test device

@@ -31,16 +31,7 @@ using namespace std::chrono_literals;
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-Model hand_model() {
-  const AgentSpec a = load_agent(AFFORD_SOURCE_DIR "/agents/hand.yaml");
-  Model m;
-  m.has_agent = true;
-  for (int f = 0; f < kFingers; ++f) {
-    m.joint_min[f] = a.fingers[f].joint_min;
-    m.joint_max[f] = a.fingers[f].joint_max;
-  }
-  return m;
-}
+Model hand_model() { return compile_agent_only(load_agent(AFFORD_SOURCE_DIR "/agents/hand.yaml")); }
 
 // A glove report (devices/glove.yaml): every sensor at `centideg`, the
 // tracker at x = `x_mm`.
