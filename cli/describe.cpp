@@ -20,12 +20,25 @@ namespace {
 std::string q(double si, const Dimension& d) { return format_quantity(si, d); }
 
 void describe_effects() {
-  std::cout << "optional torque terms (object file, key 'effects'):\n";
+  std::cout << "optional effects (key 'effects' of the file named; a measurement file may switch on any):\n";
   for (const EffectManifest& e : effect_registry()) {
-    std::cout << "  " << e.name << ": " << e.doc << "\n";
-    for (const EffectParam& p : e.params) std::cout << "      " << p.key << ": " << p.doc << "\n";
+    std::cout << "  " << e.name << " (" << home_name(e.home) << " file): " << e.doc << "\n";
+    for (const EffectParam& p : e.params) {
+      std::cout << "      " << p.key << ": " << p.doc << ", " << (p.min_included ? "from " : "above ")
+                << q(p.min, p.dimension) << " to " << q(p.max, p.dimension) << "\n";
+    }
     std::cout << "      enabled: true|false (optional, default true)\n";
   }
+}
+
+// "pivot_friction: torque 0.01 N*m" for an effect a file switched on.
+std::string effect_line(const ModelEffect& e) {
+  std::string line = e.name + ":";
+  const EffectManifest& manifest = manifest_of(e.kind);
+  for (size_t i = 0; i < manifest.params.size(); ++i) {
+    line += " " + std::string(manifest.params[i].key) + " " + q(e.param[i], manifest.params[i].dimension);
+  }
+  return line + (e.enabled ? "" : " (disabled)");
 }
 
 void describe_object(const ObjectSpec& o, const std::string& actee_dir) {
@@ -64,9 +77,7 @@ void describe_object(const ObjectSpec& o, const std::string& actee_dir) {
   const double far = std::abs(m.emphasis_to) > std::abs(m.emphasis_from) ? m.emphasis_to : m.emphasis_from;
   std::cout << "effort to close against the spring alone, at " << q(far, dim::length) << ": "
             << q(effort_for_load(m, m.theta_min, far, m.application_from, 0), dim::force) << "\n";
-  for (const ModelEffect& e : m.effects) {
-    std::cout << "effect " << e.name << (e.enabled ? "" : " (disabled)") << "\n";
-  }
+  for (const ModelEffect& e : m.effects) std::cout << "effect " << effect_line(e) << "\n";
 
   if (actee_dir.empty() || !std::filesystem::is_directory(actee_dir)) return;
   std::vector<std::string> files;

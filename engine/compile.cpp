@@ -1,4 +1,5 @@
 // Spec -> Model, as a list of passes (MuJoCo's compiler style).
+#include <algorithm>
 #include <cmath>
 
 #include "model.h"
@@ -25,7 +26,6 @@ void compile_lever(const ObjectSpec& o, Model& m) {
   m.theta_rest = o.lever.theta_rest;
   m.spring_constant = o.spring.constant;
   m.spring_position = o.spring.position;
-  m.spring_rest_length = o.spring.rest_length;
   m.emphasis_from = o.emphasis.from;
   m.emphasis_to = o.emphasis.to;
   m.application_from = o.application.from;
@@ -37,16 +37,59 @@ void compile_lever(const ObjectSpec& o, Model& m) {
 }
 
 void compile_parts(const ObjectSpec& o, Model& m) {
+  double total = 0, moving = 0;
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // m^4: volume times centroid, moving arm frame
   for (const PartSpec& p : o.parts) {
     m.parts.push_back(ModelPart{p.name, p.arm, Geometry::compile(p.shape), to_isometry(p.pose)});
+    const ModelPart& part = m.parts.back();
+    const double v = part.geometry.volume();
+    total += v;
+    if (part.arm == Arm::moving) {
+      moving += v;
+      moment += v * (part.in_arm * part.geometry.centroid());
+    }
   }
+  // The tool's mass shared by volume: the arms are of one material.
+  m.arm_mass = total > 0 ? o.mass * moving / total : 0.0;
+  m.arm_centre = moving > 0 ? Eigen::Vector3d(moment / moving) : Eigen::Vector3d::Zero();
 }
 
-void compile_effects(const ObjectSpec& o, Model& m) {
-  for (const EffectSpec& e : o.effects) {
-    const EffectManifest* manifest = find_effect(e.name);
-    if (manifest == nullptr) throw LogicError("effect passed validation but is not registered: " + e.name);
-    m.effects.push_back(ModelEffect{manifest->kind, e.name, e.enabled, e.param[0]});
+// The effects of the object, then the actee's, then those a measurement
+// gives, which replace one of the same name; then their numbers, resolved
+// for the solver.
+void compile_effects(const ObjectSpec& o, const ActeeSpec* a, const ModelOptions& options, Model& m) {
+  auto add = [&m](const std::vector<EffectSpec>& list) {
+    for (const EffectSpec& e : list) {
+      const ModelEffect effect{e.kind, e.name, e.enabled, e.param, e.loc};
+      auto same = std::find_if(m.effects.begin(), m.effects.end(), [&](const ModelEffect& x) { return x.kind == e.kind; });
+      if (same != m.effects.end()) {
+        *same = effect;
+      } else {
+        m.effects.push_back(effect);
+      }
+    }
+  };
+  add(o.effects);
+  if (a != nullptr) add(a->effects);
+  add(options.effects);
+  for (const ModelEffect& e : m.effects) {
+    if (!e.enabled) continue;
+    switch (e.kind) {
+      case EffectKind::pivot_friction: m.friction_torque = e.param[0]; break;
+      case EffectKind::viscous_damping: m.damping = e.param[0]; break;
+      case EffectKind::spring_preload: m.spring_preload = e.param[0]; break;
+      case EffectKind::progressive_spring: m.spring_cubic = e.param[0]; break;
+      case EffectKind::actee_compliance:
+        m.actee_exponent = e.param[0];
+        m.actee_reference = e.param[1];
+        break;
+      case EffectKind::arm_inertia: m.arm_inertia = e.param[0]; break;
+      case EffectKind::gravity:
+        m.gravity = true;
+        m.gravity_extra = e.param[0];
+        break;
+      case EffectKind::sensor_latency: m.sensor_latency = e.param[0]; break;
+    }
   }
 }
 
@@ -97,6 +140,7 @@ void compile_agent(const AgentSpec& a, Model& m) {
   m.has_agent = true;
   m.agent_name = a.name;
   m.force_gain = a.force_gain;
+  m.hand_damping = a.damping;
   m.max_force = a.max_force;
   for (int i = 0; i < kFingers; ++i) {
     const FingerSpec& f = a.fingers[static_cast<size_t>(i)];
@@ -120,8 +164,8 @@ Model compile(const ObjectSpec& object, const ActeeSpec* actee, const AgentSpec*
   m.contact_tolerance = options.contact_tolerance;  // touching distance
   compile_lever(object, m);                         // lever, spring, regions, pose
   compile_parts(object, m);                         // FCL shapes of the arms
-  compile_effects(object, m);                       // optional torque terms
   if (actee != nullptr) compile_actee(*actee, options, m);  // shape, limit, placement
+  compile_effects(object, actee, options, m);       // optional terms, resolved
   if (agent != nullptr) compile_agent(*agent, m);   // fingertips, joint ranges, f_a
   compile_grasps(options.grasps, m);                // taxonomy: flat joint ranges
   return m;
@@ -139,8 +183,11 @@ Eigen::Isometry3d moving_arm_pose(double theta_rad) {
   return pose;
 }
 
-double spring_compression(const Model& m, double theta_rad) {
-  return m.spring_rest_length - std::abs(m.spring_position) * theta_rad;
+const ModelEffect* enabled_effect(const Model& m, EffectKind kind) {
+  for (const ModelEffect& e : m.effects) {
+    if (e.kind == kind && e.enabled) return &e;
+  }
+  return nullptr;
 }
 
 }  // namespace afford

@@ -15,15 +15,6 @@ InteractionSpace interaction_space(const Model& m) {
   return s;
 }
 
-double spring_force(const Model& m, double theta_rad) {
-  const double d = spring_compression(m, theta_rad);
-  double f = m.spring_constant * d;
-  for (const ModelEffect& e : m.effects) {
-    if (e.enabled && e.kind == EffectKind::progressive_spring && d > 0) f += e.param * d * d * d;
-  }
-  return f;
-}
-
 double effort_for_load(const Model& m, double theta_rad, double effort_m, double load_m, double load_n) {
   return (spring_force(m, theta_rad) * std::abs(m.spring_position) + load_n * std::abs(load_m)) /
          std::abs(effort_m);

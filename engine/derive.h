@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "model.h"
+#include "terms.h"
 
 namespace afford {
 
@@ -17,9 +18,6 @@ struct InteractionSpace {
   double gap_from = 0, gap_to = 0;  // m, jaw opening (perpendicular) at theta_max at each end
 };
 InteractionSpace interaction_space(const Model& m);
-
-// Spring force (N) at opening angle theta, with the progressive term if on.
-double spring_force(const Model& m, double theta_rad);
 
 // Effort force (N) at signed emphasis distance effort_m that holds the lever
 // at theta with a load of load_n newtons at load_m (moment balance, no

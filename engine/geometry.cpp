@@ -235,6 +235,14 @@ Geometry Geometry::compile(const ShapeSpec& spec) {
   return g;
 }
 
+double Geometry::volume() const { return fcl_->computeVolume(); }
+
+Vector3d Geometry::centroid() const {
+  // Every shape but a hull is symmetric about its origin (a turn folded into
+  // fcl_offset_ keeps it so).
+  return spec_.kind == ShapeKind::convex ? Vector3d(fcl_->computeCOM()) : Vector3d::Zero();
+}
+
 double Geometry::support(const Vector3d& d) const {
   switch (spec_.kind) {
     case ShapeKind::sphere:

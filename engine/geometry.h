@@ -32,6 +32,8 @@ class Geometry {
   // max over the shape of x . direction, local frame, m (direction unit).
   double support(const Eigen::Vector3d& direction) const;
   const ShapeSpec& spec() const { return spec_; }
+  double volume() const;              // m^3
+  Eigen::Vector3d centroid() const;   // m, of the volume, local frame
 
  private:
   ShapeSpec spec_;

@@ -1,21 +1,47 @@
 // Stage 3: the lever-spring solver (paper Sec. 4.3.1-4.3.2, DESIGN.md).
 //
-// Quasi-static moment balance about the fulcrum. Forces act along each
-// point's direction of rotation and displacements are measured along the
-// arc, so virtual work and moment balance agree:
+// Moment balance about the fulcrum decides the angle every frame. Forces act
+// along each point's direction of rotation and displacements are measured
+// along the arc, so virtual work and moment balance agree:
 //
-//     F_ag * D_ag = S_k * d * D_s + F_acr * D_ac + (optional terms)
+//     F_ag * D_ag = S_k * d * D_s + F_acr * D_ac + stop + (enabled effects)
 //
 // The paper's eq. (5) writes F_agr = F_agr' * D_ag/D_s + F_acr * D_ag/D_ac,
 // which inverts both distance ratios: a nutcracker would then weaken the
 // hand. We follow the physics (as eqs. 6-8 do):
 //
-//     F_agr = (S_k * d * D_s + F_acr * D_ac) / D_ag.
+//     F_agr = (S_k * d * D_s + F_acr * D_ac + ...) / D_ag.
+//
+// How eqs. (3) and (7) are read. The device gives where the thumb wants to
+// be (its motion projected on the rotation direction L_d, eq. 1), not a
+// force. Eq. (3), F_ag = F_agr + f_a * v, says the hand pushes harder the
+// further it moves on against the tool; read with f_a in N/m (so that the
+// result does not depend on the frame rate), the hand is a spring of
+// stiffness f_a between the tracked thumb and the emphasis point, with
+// optional damping, its push capped by the force limit in force (the
+// agent's, capped by the grasp type's). Eq. (7), F_ac = (F_ag' - S_k d)
+// D_ac/D_s, then says the actee gets what the hand's torque leaves after the
+// spring; here it also leaves what every other term takes. So a stiffer
+// spring, a stiff pivot or a weak hand change the angle, the actee's force
+// and so the verdict.
+//
+// Integration: implicit (backward) Euler on the angle. With the angle at
+// the end of the frame as the unknown, every term is a monotone function of
+// it (the hand pushes more the further the arm is behind the thumb, the
+// spring and the actee push less the further the arm is open, inertia and
+// damping grow with the step), so the balance has one root, found by
+// Newton's method kept inside a bracket. This is stable at the 1 ms step for
+// any stiffness, damping or inertia, and without inertia or damping it is
+// the quasi-static balance itself. Coulomb friction is set-valued at rest:
+// the arm stays while the net torque is below the friction torque (stiction,
+// no chatter at zero speed) and otherwise moves with the friction against
+// it.
 #include <algorithm>
 #include <cmath>
 
 #include "lever.h"
 #include "stages.h"
+#include "terms.h"
 
 namespace afford {
 namespace {
@@ -24,135 +50,218 @@ namespace {
 // divide by nearly zero).
 constexpr double kMinLeverArm = 1e-3;  // m
 
-// Fills the torques that depend only on the lever's motion (spring and the
-// optional effects), N*m, opening positive; returns their sum.
-double motion_torques(const Model& m, State& s) {
-  const double d = spring_compression(m, s.theta);
-  const double ds = std::abs(m.spring_position);
-  s.compression = d;
-  s.torque[kSpring] = m.spring_constant * d * ds;  // eq. 4 times the spring's lever arm
-  s.torque[kPivotFriction] = s.torque[kViscousDamping] = 0;
-  s.torque[kProgressiveSpring] = s.torque[kArmInertia] = 0;
-  for (const ModelEffect& e : m.effects) {
-    if (!e.enabled) continue;
-    switch (e.kind) {
-      case EffectKind::pivot_friction:
-        // Coulomb: against the motion; undetermined (taken as 0) at rest.
-        s.torque[kPivotFriction] = s.omega > 0 ? -e.param : (s.omega < 0 ? e.param : 0.0);
-        break;
-      case EffectKind::viscous_damping:
-        s.torque[kViscousDamping] = -e.param * s.omega;
-        break;
-      case EffectKind::progressive_spring:
-        s.torque[kProgressiveSpring] = d > 0 ? e.param * d * d * d * ds : 0.0;
-        break;
-      case EffectKind::arm_inertia:
-        s.torque[kArmInertia] = -e.param * s.alpha;
-        break;
-    }
+// The balance at a candidate angle theta for the end of this frame. Its
+// value is the net closing torque, N*m: the agent's torque minus every
+// opening term, inertia and damping included (d'Alembert), friction
+// excepted; it increases with theta.
+struct Balance {
+  const Model& m;
+  double theta0 = 0, omega0 = 0;  // rad, rad/s: the last frame
+  double b = 0;                   // m, the thumb's lever arm; 0 when the hand does not hold the tool
+  double cmd = 0, omega_cmd = 0;  // rad, rad/s: the hand's target and its rate
+  double max_force = 0;           // N
+  bool actee = false;             // the actee is between the jaws, unbroken
+  double a = 0, theta_c = 0, thickness = 0;  // m, rad, m
+  double g_cos = 0, g_sin = 0;    // N*m, gravity's coefficients for this frame
+
+  double omega(double theta) const { return (theta - theta0) / m.timestep; }
+
+  // The hand impedance's push at the emphasis, N, and its slope, N/rad.
+  double hand(double theta, double* slope) const {
+    *slope = 0;
+    if (b == 0) return 0;
+    const double f = m.force_gain * b * (theta - cmd) + m.hand_damping * b * (omega(theta) - omega_cmd);
+    if (f <= 0) return 0;  // the thumb has left the arm: it pushes, never pulls
+    if (f >= max_force) return max_force;
+    *slope = m.force_gain * b + m.hand_damping * b / m.timestep;
+    return f;
   }
-  return s.torque[kSpring] + s.torque[kPivotFriction] + s.torque[kViscousDamping] +
-         s.torque[kProgressiveSpring] + s.torque[kArmInertia];
-}
+
+  // The actee's force, N, and its slope with theta, N/rad.
+  double actee_force(double theta, double* slope) const {
+    *slope = 0;
+    if (!actee || theta >= theta_c) return 0;
+    double law_slope = 0;
+    const double f = actee_force_law(m, a * (theta_c - theta), thickness, &law_slope);
+    *slope = -law_slope * a;
+    return f;
+  }
+
+  double value(double theta, double* slope) const {
+    double hand_slope = 0, actee_slope = 0;
+    const double hand_torque = hand(theta, &hand_slope) * b;
+    const SpringTorques spring = spring_torques(m, theta);
+    const double opening = spring.linear + spring.preload + spring.progressive +
+                           actee_force(theta, &actee_slope) * a + g_cos * std::cos(theta) +
+                           g_sin * std::sin(theta);
+    const double w = omega(theta);
+    const double alpha = (w - omega0) / m.timestep;
+    const double opening_slope = spring.slope + actee_slope * a +
+                                 (m.gravity ? -g_cos * std::sin(theta) + g_sin * std::cos(theta) : 0.0);
+    *slope = hand_slope * b - opening_slope + m.damping / m.timestep +
+             m.arm_inertia / (m.timestep * m.timestep);
+    return hand_torque - opening + m.damping * w + m.arm_inertia * alpha;
+  }
+
+  // The theta in [lo, hi] where value() = target; lo or hi if it is outside.
+  double solve(double lo, double hi, double target) const {
+    double slope = 0;
+    double f_lo = value(lo, &slope) - target;
+    if (f_lo >= 0) return lo;
+    if (value(hi, &slope) - target <= 0) return hi;
+    double x = std::clamp(theta0, lo, hi);
+    for (int i = 0; i < 100; ++i) {
+      const double f = value(x, &slope) - target;
+      if (f == 0) return x;
+      if (f < 0) {
+        lo = x;
+        f_lo = f;
+      } else {
+        hi = x;
+      }
+      double next = slope > 0 ? x - f / slope : lo;
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect
+      if (std::abs(next - x) <= 1e-13 || hi - lo <= 1e-15) return next;  // rad
+      x = next;
+    }
+    return x;
+  }
+};
 
 // Follows the thumb: eq. (1) projects its motion on the rotation direction
-// L_d of the emphasis point, eq. (2) gives its speed.
+// L_d of the emphasis point, eq. (2) gives its speed. The target angle is
+// where the tracked thumb would put the arm.
 void follow_thumb(const Model& m, State& s) {
   const Eigen::Vector3d thumb = s.object_pose.inverse() * s.fingertip[0];
   const Eigen::Vector3d motion = thumb - s.thumb_in_object;
   s.thumb_in_object = thumb;
   const double c = std::cos(s.theta), sn = std::sin(s.theta);
-  s.effort_distance = c * thumb.x() + sn * thumb.y();  // along the moving arm
+  // The tracked thumb's distance along the arm turns its advance into an
+  // angle; the lever arm D_ag is where it meets the arm: the tracked thumb
+  // turned back by how far it was ahead (the proxy below), since it may
+  // have gone on into the arm.
+  const double tracked = c * thumb.x() + sn * thumb.y();
+  const Eigen::Vector3d on_arm = moving_arm_pose(std::max(0.0, s.theta - s.theta_command)) * thumb;
+  s.effort_distance = c * on_arm.x() + sn * on_arm.y();
   const double side = s.effort_distance >= 0 ? 1.0 : -1.0;
   s.closing_direction = Eigen::Vector3d(side * sn, -side * c, 0.0);  // L_d, unit
   const double advance = motion.dot(s.closing_direction);            // eq. 1
-  s.thumb_speed = advance / m.timestep;                      // eq. 2
-  s.theta_command -= advance / std::max(std::abs(s.effort_distance), kMinLeverArm);
+  s.thumb_speed = advance / m.timestep;                               // eq. 2
+  const double turn = advance / std::max(std::abs(tracked), kMinLeverArm);
+  s.theta_command -= turn;
+  s.omega_command = -turn / m.timestep;
+}
+
+// sensor_latency: the effort a sensor reports `delay` after it acted,
+// interpolated between the two frames around it.
+void sense_effort(const Model& m, State& s) {
+  if (s.effort_history.empty()) {
+    s.effort_sensed = s.effort_force;
+    return;
+  }
+  const auto n = static_cast<std::int64_t>(s.effort_history.size());
+  s.effort_history[static_cast<size_t>(s.history_head % n)] = s.effort_force;
+  const double frames_back = m.sensor_latency / m.timestep;
+  const auto whole = static_cast<std::int64_t>(frames_back);
+  const double part = frames_back - static_cast<double>(whole);
+  auto at = [&](std::int64_t back) {  // before the first frame the effort was 0
+    const std::int64_t k = s.history_head - back;
+    return k < 0 ? 0.0 : s.effort_history[static_cast<size_t>(k % n)];
+  };
+  s.effort_sensed = (1 - part) * at(whole) + part * at(whole + 1);
+  ++s.history_head;
 }
 
 }  // namespace
 
 void solve_lever(const Model& m, State& s) {
-  const double theta_before = s.theta;
-  const double omega_before = s.omega;
-  double theta = m.theta_rest;
-  double excess = 0;       // m, thumb travel past the arm, along L_d
-  double actee_force = 0;  // N, F_acr
-  const double a = std::abs(s.load_distance);
-  const bool actee_blocks = s.between_jaws && s.condition != ActeeCondition::broken;
+  Balance eq{m};
+  eq.theta0 = s.theta;
+  eq.omega0 = s.omega;
+  eq.max_force = s.max_force;
+  eq.actee = s.between_jaws && s.condition != ActeeCondition::broken;
+  eq.a = std::abs(s.load_distance);
+  eq.theta_c = s.contact_angle;
+  eq.thickness = s.actee_thickness;
+  gravity_coefficients(m, s.object_pose.linear(), &eq.g_cos, &eq.g_sin);
   s.thumb_speed = 0;
-  s.blocked = false;
-
   if (s.grasped) {
     follow_thumb(m, s);
-    const double b = std::max(std::abs(s.effort_distance), kMinLeverArm);
-    const double cmd = s.theta_command;
-    const double stop = actee_blocks ? std::max(s.contact_angle, m.theta_min) : m.theta_min;
-    if (cmd >= stop) {
-      theta = std::min(cmd, m.theta_max);  // free: the arm follows the thumb
-    } else if (actee_blocks && s.contact_angle > m.theta_min) {
-      // The thumb pushes on past the actee. Eq. (3), F_ag = F_agr + f_a*v,
-      // read with f_a in N/m: the hand's force grows by f_a for every metre
-      // the thumb advances past where the arm can follow. In series with the
-      // actee's stiffness k this settles where f_a*e*D_ag = k*x*D_ac.
-      s.blocked = true;
-      const double ka2 = m.actee_stiffness * a * a;
-      const double fb2 = m.force_gain * b * b;
-      theta = std::max((ka2 * s.contact_angle + fb2 * cmd) / (ka2 + fb2), m.theta_min);
-      actee_force = m.actee_stiffness * a * (s.contact_angle - theta);
-      excess = b * (theta - cmd);
-    } else {
-      theta = m.theta_min;  // pressed against the closed stop
-      excess = b * (theta - cmd);
-    }
-    s.theta = theta;
-    s.omega = (theta - theta_before) / m.timestep;
-    s.alpha = (s.omega - omega_before) / m.timestep;
-    const double motion = motion_torques(m, s);
-    double effort = motion / b + m.force_gain * excess;
-    // The hand cannot push harder than s.max_force (the agent's, capped by
-    // the grasp type's; stage 2): past that point more
-    // travel of the tracked thumb adds no force, and the squeeze it would
-    // have made is dropped. The command stays where the thumb is, so the
-    // thumb has to come back that far before the force falls.
-    if (excess > 0 && effort > s.max_force) {
-      excess = std::max(0.0, (s.max_force - motion / b) / m.force_gain);
-      if (s.blocked) {
-        actee_force = std::min(actee_force, m.force_gain * excess * b / a);
-        theta = s.contact_angle - actee_force / (m.actee_stiffness * a);
-        s.theta = theta;
-      }
-      effort = motion / b + m.force_gain * excess;
-    }
-    s.torque[kActee] = actee_force * a;
-    // Whatever of the agent's torque neither the terms nor the actee take
-    // goes into the angle limit.
-    s.torque[kStop] = effort * b - motion - s.torque[kActee];
-    s.effort_force = effort;
-    // The thumb as contacts see it: held on the arm's surface, however far
-    // the tracked thumb went past it (a haptic proxy, the "god object").
-    // The tracked thumb turned back about the pivot by how far it is ahead
-    // of the arm.
-    const Eigen::Isometry3d back = moving_arm_pose(std::max(0.0, s.theta - cmd));
-    s.thumb_proxy = s.object_pose * (back * s.thumb_in_object);
+    eq.b = std::max(std::abs(s.effort_distance), kMinLeverArm);
+    eq.cmd = s.theta_command;
+    eq.omega_cmd = s.omega_command;
   } else {
-    // Untouched, the spring returns the tool to its rest angle.
-    s.theta = theta;
-    s.theta_command = theta;
-    s.omega = (theta - theta_before) / m.timestep;
-    s.alpha = (s.omega - omega_before) / m.timestep;
-    // The limit holds whatever the spring pushes with at rest.
-    s.torque[kActee] = 0;
-    s.torque[kStop] = -motion_torques(m, s);
-    s.effort_force = 0;
+    // Untouched, the hand's target is wherever the arm is.
     s.effort_distance = 0;
+    s.theta_command = s.theta;
+    s.omega_command = 0;
   }
-  s.effort_excess = excess;
-  s.actee_force = actee_force;
-  s.actee_compression = s.blocked ? a * (s.contact_angle - s.theta) : 0.0;
+
+  // The actee cannot be squeezed through: the arm's range ends short of
+  // where it would be flat.
+  double lo = m.theta_min;
+  if (eq.actee && eq.a > 0 && eq.thickness > 0) {
+    lo = std::max(lo, eq.theta_c - eq.thickness * (1 - 1e-9) / eq.a);
+  }
+  const double hi = m.theta_max;
+  const double start = std::clamp(s.theta, lo, hi);
+
+  // Coulomb friction: stick where the net torque at rest is within the
+  // friction torque, else move with friction against the motion.
+  double slope = 0;
+  const double at_rest = eq.value(start, &slope);
+  const double tf = m.friction_torque;
+  double theta = start, friction = 0;
+  if (std::abs(at_rest) <= tf && start == s.theta) {
+    friction = at_rest;  // stiction holds the arm
+  } else if (at_rest > tf) {
+    friction = tf;  // closing: friction opens
+    theta = eq.solve(lo, start, tf);
+  } else {
+    friction = -tf;
+    theta = eq.solve(start, hi, -tf);
+  }
+
+  // The terms at the solution, each named; the stop takes what is left when
+  // the arm rests on a limit (or on an actee squeezed to its last solid).
+  const bool resting = theta == lo || theta == hi;
+  if (resting && theta == start) friction = 0;  // on a stop at rest: the stop's reaction takes it all
+  double hand_slope = 0, actee_slope = 0;
+  const SpringTorques spring = spring_torques(m, theta);
+  const double omega = eq.omega(theta);
+  const double alpha = (omega - eq.omega0) / m.timestep;
+  s.theta = theta;
+  s.omega = omega;
+  s.alpha = alpha;
+  s.effort_force = eq.hand(theta, &hand_slope);
+  s.effort_excess = s.grasped ? std::max(0.0, eq.b * (theta - eq.cmd)) : 0.0;
+  s.actee_force = eq.actee_force(theta, &actee_slope);
+  s.compression = spring_compression(m, theta);
+  s.torque[kSpring] = spring.linear;
+  s.torque[kSpringPreload] = spring.preload;
+  s.torque[kProgressiveSpring] = spring.progressive;
+  s.torque[kActee] = s.actee_force * eq.a;
+  s.torque[kPivotFriction] = friction;
+  s.torque[kViscousDamping] = -m.damping * omega;
+  s.torque[kArmInertia] = -m.arm_inertia * alpha;
+  s.torque[kGravity] = eq.g_cos * std::cos(theta) + eq.g_sin * std::sin(theta);
+  double sum = 0;
+  for (int t = 0; t < kTermCount; ++t) sum += t == kStop ? 0.0 : s.torque[static_cast<size_t>(t)];
+  s.torque[kStop] = resting ? s.effort_force * eq.b - sum : 0.0;
+
+  if (s.grasped) {
+    // The thumb as contacts see it: held on the arm's surface, however far
+    // the tracked thumb went past it (a haptic proxy, the "god object"). The
+    // tracked thumb turned back about the pivot by how far it is ahead.
+    const Eigen::Isometry3d back = moving_arm_pose(std::max(0.0, s.theta - s.theta_command));
+    s.thumb_proxy = s.object_pose * (back * s.thumb_in_object);
+  }
+  s.blocked = s.actee_force > 0;
+  s.actee_compression = s.blocked ? eq.a * (s.contact_angle - s.theta) : 0.0;
   s.at_limit = s.theta <= m.theta_min || s.theta >= m.theta_max;
-  s.pattern = (s.grasped && a > 0 && s.effort_distance != 0) ? pattern_at(s.effort_distance, s.load_distance)
-                                                             : m.pattern;
+  s.pattern = (s.grasped && eq.a > 0 && s.effort_distance != 0) ? pattern_at(s.effort_distance, s.load_distance)
+                                                                 : m.pattern;
+  sense_effort(m, s);
 }
 
 }  // namespace afford

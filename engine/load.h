@@ -23,6 +23,8 @@ ShapeSpec read_shape(const Node& node);
 PoseSpec read_pose(MapReader& map);     // keys position (required), rotation (optional)
 RangeSpec read_range(const Node& node, const std::string& what);  // {from, to}
 Eigen::Vector3d read_direction(const Node& node);  // three numbers, made unit
+// The `effects:` mapping of a file of kind `home` (load_effects.cpp).
+std::vector<EffectSpec> read_effects(const Node& node, EffectHome home);
 
 // Which kind a file is, from its first key (object, actee, agent, ...).
 std::string file_kind(const Node& root);

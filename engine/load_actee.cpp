@@ -5,7 +5,8 @@ namespace afford {
 
 ActeeSpec read_actee(const Node& root) {
   MapReader m(root, "an actee file",
-              {"actee", "description", "shape", "mass", "force_direction", "limit", "stiffness", "breaks"});
+              {"actee", "description", "shape", "mass", "force_direction", "limit", "stiffness", "breaks",
+               "effects"});
   ActeeSpec a;
   a.loc = root.loc();
   a.file = root.loc().file;
@@ -19,6 +20,7 @@ ActeeSpec read_actee(const Node& root) {
   a.limit = read_positive(limit, dim::force);
   a.stiffness = read_positive(m.required("stiffness"), dim::stiffness);
   a.breaks = read_bool(m.required("breaks"));
+  if (std::optional<Node> effects = m.optional("effects")) a.effects = read_effects(*effects, EffectHome::actee);
   return a;
 }
 

@@ -25,7 +25,7 @@ FingerSpec read_finger(const Node& node, const std::string& name) {
 }  // namespace
 
 AgentSpec read_agent(const Node& root) {
-  MapReader m(root, "an agent file", {"agent", "description", "force_gain", "max_force", "fingers"});
+  MapReader m(root, "an agent file", {"agent", "description", "force_gain", "max_force", "damping", "fingers"});
   AgentSpec a;
   a.loc = root.loc();
   a.file = root.loc().file;
@@ -33,6 +33,7 @@ AgentSpec read_agent(const Node& root) {
   a.description = read_string(m.required("description"));
   a.force_gain = read_positive(m.required("force_gain"), dim::stiffness);
   a.max_force = read_positive(m.required("max_force"), dim::force);
+  if (std::optional<Node> damping = m.optional("damping")) a.damping = read_non_negative(*damping, dim::damping);
   MapReader fingers(m.required("fingers"), "the fingers", {kFingerNames.begin(), kFingerNames.end()});
   for (int i = 0; i < kFingers; ++i) {
     a.fingers[static_cast<size_t>(i)] = read_finger(fingers.required(kFingerNames[i]), kFingerNames[i]);

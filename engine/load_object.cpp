@@ -4,7 +4,6 @@
 #include <numbers>
 
 #include "did_you_mean.h"
-#include "effects.h"
 #include "lever.h"
 #include "load.h"
 
@@ -70,28 +69,55 @@ SpringSpec read_spring(const Node& node, const LeverSpec& lever) {
     node.fail("exactly one of rest_length and preload",
               rest_length ? "both" : "neither");
   }
-  const double gap_at_rest = std::abs(spring.position) * lever.theta_rest;
-  if (rest_length) {
-    spring.rest_length = read_positive(*rest_length, dim::length);
-  } else {
-    const double force = read_non_negative(*preload, dim::force);
-    spring.rest_length = gap_at_rest + force / spring.constant;
-  }
-  // The untouched tool must be at rest: a compressed spring holds it open
-  // against theta_max, a stretched one closed against theta_min.
-  const double compression = spring.rest_length - gap_at_rest;
+  // Either way the spring is a spring free at the rest angle plus a preload:
+  // k * (rest_length - |S_p| * theta) = k * |S_p| * (rest - theta) + preload.
   const Node& where = rest_length ? *rest_length : *preload;
-  if (compression > 1e-12 && lever.theta_rest != lever.theta_max) {
-    where.fail("a spring free at the rest angle, or the rest angle at theta_max",
-               "a spring compressed by " + format_quantity(compression, dim::length) +
-                   " at a rest angle below theta_max");
-  }
-  if (compression < -1e-12 && lever.theta_rest != lever.theta_min) {
-    where.fail("a spring free at the rest angle, or the rest angle at theta_min",
-               "a spring stretched by " + format_quantity(-compression, dim::length) +
-                   " at a rest angle above theta_min");
+  spring.preload_loc = where.loc();
+  if (rest_length) {
+    const double gap_at_rest = std::abs(spring.position) * lever.theta_rest;
+    spring.preload = spring.constant * (read_positive(*rest_length, dim::length) - gap_at_rest);
+  } else {
+    spring.preload = read_non_negative(*preload, dim::force);
   }
   return spring;
+}
+
+// The untouched tool must be at rest: a spring that pushes at the rest angle
+// holds it open against theta_max, one that pulls holds it closed against
+// theta_min.
+void check_preload(const LeverSpec& lever, const SpringSpec& spring, double preload, const SourceLoc& where) {
+  const double compression = preload / spring.constant;
+  if (compression > 1e-12 && lever.theta_rest != lever.theta_max) {
+    fail(where, "a spring free at the rest angle, or the rest angle at theta_max",
+         "a spring compressed by " + format_quantity(compression, dim::length) + " at a rest angle below theta_max");
+  }
+  if (compression < -1e-12 && lever.theta_rest != lever.theta_min) {
+    fail(where, "a spring free at the rest angle, or the rest angle at theta_min",
+         "a spring stretched by " + format_quantity(-compression, dim::length) + " at a rest angle above theta_min");
+  }
+}
+
+// The spring section's preload is the spring_preload effect's parameter;
+// given in both places it would be counted twice.
+void add_spring_preload(ObjectSpec& o) {
+  for (const EffectSpec& e : o.effects) {
+    if (e.kind != EffectKind::spring_preload) continue;
+    if (o.spring.preload != 0) {
+      fail(e.loc, "the spring's preload given once",
+           "spring_preload here and a preload of " + format_quantity(o.spring.preload, dim::force) + " at line " +
+               std::to_string(o.spring.preload_loc.line) + " in the spring section");
+    }
+    if (e.enabled) check_preload(o.lever, o.spring, e.param[0], e.loc);
+    return;
+  }
+  check_preload(o.lever, o.spring, o.spring.preload, o.spring.preload_loc);
+  if (o.spring.preload == 0) return;
+  EffectSpec e;
+  e.name = "spring_preload";
+  e.kind = EffectKind::spring_preload;
+  e.param[0] = o.spring.preload;
+  e.loc = o.spring.preload_loc;
+  o.effects.push_back(e);
 }
 
 // The regions must agree with the declared lever pattern (Fig. 2).
@@ -104,33 +130,6 @@ void check_pattern(const ObjectSpec& o) {
                           pattern_name(*derived),
                       std::string("'") + pattern_name(o.lever.pattern) + "'");
   }
-}
-
-std::vector<EffectSpec> read_effects(const Node& node) {
-  std::vector<std::string> names;
-  for (const EffectManifest& e : effect_registry()) names.emplace_back(e.name);
-  MapReader m(node, "the effects", names);  // rejects unknown effects, with "did you mean"
-  std::vector<EffectSpec> effects;
-  for (const auto& [name, value] : m.entries()) {
-    const EffectManifest* manifest = find_effect(name);
-    if (manifest == nullptr) throw LogicError("an effect passed MapReader but is not registered: " + name);
-    (void)m.required(name);  // reports an effect with no value
-    std::vector<std::string> keys{"enabled"};
-    for (const EffectParam& p : manifest->params) keys.emplace_back(p.key);
-    MapReader params(value, "the effect " + name, keys);
-    EffectSpec effect;
-    effect.name = name;
-    effect.loc = value.loc();
-    for (size_t i = 0; i < manifest->params.size(); ++i) {
-      const EffectParam& p = manifest->params[i];
-      const Node v = params.required(p.key);
-      const double x = read_quantity(v, p.dimension);
-      effect.param[i] = p.zero_allowed ? require_non_negative(v, x) : require_positive(v, x);
-    }
-    if (std::optional<Node> enabled = params.optional("enabled")) effect.enabled = read_bool(*enabled);
-    effects.push_back(effect);
-  }
-  return effects;
 }
 
 PartSpec read_part(const Node& node) {
@@ -188,7 +187,8 @@ ObjectSpec read_object(const Node& root) {
     o.parts.push_back(std::move(part));
   }
   if (!has_arm[0] || !has_arm[1]) parts.fail("parts on both arms, fixed and moving");
-  if (std::optional<Node> effects = m.optional("effects")) o.effects = read_effects(*effects);
+  if (std::optional<Node> effects = m.optional("effects")) o.effects = read_effects(*effects, EffectHome::object);
+  add_spring_preload(o);
   return o;
 }
 

@@ -32,6 +32,9 @@ struct ModelOptions {
   // means no taxonomy: the grasp is decided by contact alone, and the hand's
   // force limit is the agent's max_force.
   std::vector<GraspTypeSpec> grasps;
+  // Effects given by a measurement file: they replace the object's or the
+  // actee's effect of the same name, or add to them.
+  std::vector<EffectSpec> effects;
 };
 
 struct ModelPart {
@@ -41,11 +44,14 @@ struct ModelPart {
   Eigen::Isometry3d in_arm = Eigen::Isometry3d::Identity();  // part pose in its arm's frame
 };
 
+// An effect as a file switched it on or off, for reports; the solver reads
+// the resolved numbers below (Model, "optional effects").
 struct ModelEffect {
   EffectKind kind = EffectKind::pivot_friction;
   std::string name;
   bool enabled = true;
-  double param = 0;  // SI, the manifest's only parameter
+  std::array<double, 2> param{};  // SI, in the order of the manifest's parameters
+  SourceLoc loc;                  // where it was written
 };
 
 struct Model {
@@ -61,7 +67,6 @@ struct Model {
   double theta_rest = 0;                       // rad, where the untouched tool sits
   double spring_constant = 0;                  // N/m, S_k
   double spring_position = 0;                  // m, signed S_p
-  double spring_rest_length = 0;               // m, free length
   double emphasis_from = 0, emphasis_to = 0;   // m, signed
   double application_from = 0, application_to = 0;  // m, signed
   double object_mass = 0;                      // kg
@@ -69,7 +74,21 @@ struct Model {
   Eigen::Vector3d symmetry_point = Eigen::Vector3d::Zero();    // m, O_sp in the object frame
   Eigen::Vector3d symmetry_normal = Eigen::Vector3d::UnitZ();  // unit, O_sp's normal, object frame
   std::vector<ModelPart> parts;
-  std::vector<ModelEffect> effects;
+  double arm_mass = 0;                         // kg, the moving arm's share of the mass (by volume)
+  Eigen::Vector3d arm_centre = Eigen::Vector3d::Zero();  // m, its centre of gravity, moving arm frame
+
+  // optional effects (effects.h), resolved; each is 0 (or neutral) when off
+  std::vector<ModelEffect> effects;  // every effect a file names, on or off
+  double friction_torque = 0;    // N*m, pivot_friction
+  double damping = 0;            // N*m*s/rad, viscous_damping
+  double spring_preload = 0;     // N, spring_preload: the spring's push at the rest angle
+  double spring_cubic = 0;       // N/m^3, progressive_spring
+  double arm_inertia = 0;        // kg*m^2, arm_inertia
+  bool gravity = false;          // gravity: the moving arm's weight acts
+  double gravity_extra = 0;      // N*m, gravity's extra amplitude (closing for a level fixed arm)
+  double actee_exponent = 1;     // actee_compliance: power of the deflection (1: linear)
+  double actee_reference = 0;    // m, actee_compliance: where the secant stiffness is actee_stiffness
+  double sensor_latency = 0;     // s, sensor_latency: delay of the sensed effort
 
   // actee (Fig. 6); absent when has_actee is false
   bool has_actee = false;
@@ -85,7 +104,8 @@ struct Model {
   // agent (Fig. 8); absent when has_agent is false
   bool has_agent = false;
   std::string agent_name;
-  double force_gain = 0;  // N/m, f_a of eq. 3
+  double force_gain = 0;  // N/m, f_a of eq. 3: the hand impedance's stiffness
+  double hand_damping = 0;  // N*s/m, the hand impedance's damping
   double max_force = 0;   // N, largest effort force
   std::array<double, kFingers> tip_radius{};  // m
   std::vector<Geometry> fingertip;            // one sphere per finger
@@ -117,8 +137,7 @@ Model compile_agent_only(const AgentSpec& agent);
 // Pose of the moving arm's frame in the object frame at opening angle theta.
 Eigen::Isometry3d moving_arm_pose(double theta_rad);
 
-// Spring compression d (m) at opening angle theta: free length minus the gap
-// at S_p, measured along the arc the spring end travels (|S_p| * theta).
-double spring_compression(const Model& m, double theta_rad);
+// The resolved parameters of an effect if it is on, else nullptr.
+const ModelEffect* enabled_effect(const Model& m, EffectKind kind);
 
 }  // namespace afford

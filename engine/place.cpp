@@ -36,9 +36,15 @@ void refresh_contact_angle(const Model& m, State& s) {
   s.between_jaws =
       find_contact_angle(m, rel, *s.query, &s.contact_angle, &s.jaw_contact) == JawFit::fits;
   s.load_distance = s.between_jaws ? rel.translation().x() : 0.0;
+  s.actee_thickness = thickness_across_jaws(m, rel);
 }
 
 }  // namespace
+
+double thickness_across_jaws(const Model& m, const Eigen::Isometry3d& actee_in_object) {
+  const Eigen::Vector3d across = actee_in_object.linear().transpose() * Eigen::Vector3d::UnitY();
+  return m.actee().support(across) + m.actee().support(-across);
+}
 
 void place_bodies(const Model& m, State& s, const Sample& sample) {
   const Eigen::Vector3d hand_before = s.hand.translation();

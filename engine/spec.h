@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "effects.h"
 #include "errors.h"
 
 namespace afford {
@@ -71,15 +72,19 @@ struct LeverSpec {
 struct SpringSpec {
   double constant = 0;     // N/m, S_k of eq. 4
   double position = 0;     // m, signed distance S_p of the spring from the fulcrum
-  double rest_length = 0;  // m, free length; compression d = rest_length - gap at S_p
-  SourceLoc loc;
+  // N, the spring's push at the rest angle: from `preload`, or from
+  // `rest_length` as constant * (rest_length - gap at the rest angle). It
+  // becomes the spring_preload effect; without it the spring is free at rest.
+  double preload = 0;
+  SourceLoc loc, preload_loc;
 };
 
-// An optional torque term, switched on as data (torque_terms.h lists them).
+// An optional effect, switched on as data (effects.h lists them).
 struct EffectSpec {
   std::string name;                // "pivot_friction", ...
+  EffectKind kind = EffectKind::pivot_friction;
   bool enabled = true;
-  std::array<double, 2> param{};   // SI, meaning per term (see the registry)
+  std::array<double, 2> param{};   // SI, in the order of the manifest's parameters
   SourceLoc loc;
 };
 
@@ -125,6 +130,7 @@ struct ActeeSpec {
   double limit = 0;                     // N, A_pv: breaks (or counts as squeezed) above it
   double stiffness = 0;                 // N/m, contact stiffness up to the limit
   bool breaks = true;                   // brittle; false: deforms and never breaks
+  std::vector<EffectSpec> effects;      // actee_compliance
   SourceLoc loc, limit_loc;
 };
 
@@ -147,6 +153,7 @@ struct AgentSpec {
   std::string description;
   double force_gain = 0;  // N/m: f_a of eq. 3, force added per metre the thumb advances
   double max_force = 0;   // N: the largest effort force the hand can exert
+  double damping = 0;     // N*s/m: the hand impedance's damping (optional key; 0: none)
   std::array<FingerSpec, kFingers> fingers;
   SourceLoc loc;
 };

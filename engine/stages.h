@@ -21,6 +21,10 @@ enum class JawFit { fits, too_large, out_of_reach, not_on_fixed_jaw };
 JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_object,
                           ContactQuery& query, double* theta_c, std::vector<JawContact>* contacts);
 
+// The actee's extent (m) across the jaws, placed at actee_in_object: along
+// the fixed jaw's normal, the object's y axis.
+double thickness_across_jaws(const Model& m, const Eigen::Isometry3d& actee_in_object);
+
 // 1. Bodies in the world: the sample, the grasped object, the held actee.
 void place_bodies(const Model& m, State& s, const Sample& sample);
 // 2. The grasp starts and ends, from the contacts of the last frame.

@@ -1,6 +1,7 @@
 // State: creation, reset, the frame, and the determinism hash.
 #include "state.h"
 
+#include <cmath>
 #include <cstring>
 
 #include "stages.h"
@@ -8,7 +9,8 @@
 namespace afford {
 
 const std::array<const char*, kTermCount> kTermNames = {
-    "spring", "actee", "stop", "pivot_friction", "viscous_damping", "progressive_spring", "arm_inertia"};
+    "spring", "actee", "stop", "pivot_friction", "viscous_damping", "spring_preload", "progressive_spring",
+    "arm_inertia", "gravity"};
 
 const char* condition_name(ActeeCondition c) {
   switch (c) {
@@ -43,6 +45,11 @@ void reset(const Model& m, State& s) {
     s.between_jaws = find_contact_angle(m, s.actee_in_object, *s.query, &s.contact_angle,
                                         &s.jaw_contact) == JawFit::fits;
     s.load_distance = s.between_jaws ? s.actee_in_object.translation().x() : 0.0;
+    s.actee_thickness = thickness_across_jaws(m, s.actee_in_object);
+  }
+  // The delay in whole frames and one more, to interpolate between two.
+  if (m.sensor_latency > 0) {
+    s.effort_history.assign(static_cast<size_t>(std::ceil(m.sensor_latency / m.timestep)) + 2, 0.0);
   }
 }
 
@@ -101,7 +108,7 @@ std::uint64_t state_hash(const State& s) {
   for (double x : {s.theta, s.omega, s.alpha, s.theta_command, s.effort_distance, s.load_distance,
                    s.thumb_speed, s.compression, s.effort_force, s.effort_excess, s.contact_angle,
                    s.actee_force, s.actee_load, s.actee_compression, s.peak_actee_load, s.broke_at,
-                   s.max_force}) {
+                   s.max_force, s.omega_command, s.effort_sensed, s.actee_thickness}) {
     h.value(x);
   }
   h.value(s.torque);

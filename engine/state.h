@@ -19,17 +19,21 @@ namespace afford {
 inline constexpr int kMaxContacts = 16;  // per relation; more are counted, not stored
 
 // Named torque terms about the fulcrum, N*m, positive = opening (resisting
-// the agent's squeeze). The agent's torque balances their sum.
-// kStop is the reaction of the angle limit when the agent presses the arm
-// against it; with it the terms balance the agent exactly in every case.
+// the agent's squeeze). The agent's torque F_ag * D_ag balances their sum
+// in every frame (the inertia term is -J * alpha, d'Alembert's).
+// kStop is the reaction of the angle limit when the arm rests on one; with
+// it the terms balance the agent exactly in every case. The optional terms
+// are named after their effects (effects.h).
 enum Term {
   kSpring = 0,
   kActee,
   kStop,
   kPivotFriction,
   kViscousDamping,
+  kSpringPreload,
   kProgressiveSpring,
   kArmInertia,
+  kGravity,
   kTermCount
 };
 extern const std::array<const char*, kTermCount> kTermNames;
@@ -85,15 +89,17 @@ struct State {
   double theta = 0;          // rad, opening angle
   double omega = 0;          // rad/s, d theta / dt
   double alpha = 0;          // rad/s^2
-  double theta_command = 0;  // rad, where the thumb alone would put the arm (eq. 1)
+  double theta_command = 0;  // rad, where the tracked thumb would put the arm (eq. 1): the hand's target
+  double omega_command = 0;  // rad/s, its rate
   double effort_distance = 0;  // m, D_ag: signed distance of the thumb along the moving arm
   double load_distance = 0;    // m, D_ac: signed distance of the actee along the arm
   LeverPattern pattern = LeverPattern::type2;  // as the effort and load sit now (Step 2-1)
   double thumb_speed = 0;        // m/s, v of eq. 2, along L_d, closing positive
   double compression = 0;        // m, spring compression d of eq. 4
   std::array<double, kTermCount> torque{};  // N*m, opening positive
-  double effort_force = 0;       // N, F_ag = F_agr at the emphasis, along L_d
-  double effort_excess = 0;      // m, how far the thumb is past the blocked arm
+  double effort_force = 0;       // N, F_ag = F_agr at the emphasis, along L_d: the hand impedance's force
+  double effort_excess = 0;      // m, the hand impedance's stretch: how far the thumb is past the arm
+  double effort_sensed = 0;      // N, effort_force as a sensor with sensor_latency reports it
   Eigen::Vector3d closing_direction = Eigen::Vector3d::Zero();  // L_d at the emphasis, unit, object frame
   Eigen::Vector3d thumb_proxy = Eigen::Vector3d::Zero();  // m, world: the thumb kept on the arm's surface
   bool at_limit = false;         // the arm rests on theta_min or theta_max
@@ -102,6 +108,7 @@ struct State {
   // --- actee
   bool between_jaws = false;     // the moving jaw can close on the actee
   double contact_angle = 0;      // rad, theta at which the jaws touch the actee (between_jaws)
+  double actee_thickness = 0;    // m, its extent across the jaws (between_jaws)
   Eigen::Isometry3d actee_in_object = Eigen::Isometry3d::Identity();  // while held or for contact_angle
   Eigen::Isometry3d placed_object = Eigen::Isometry3d::Identity();    // world poses contact_angle was found for
   Eigen::Isometry3d placed_actee = Eigen::Isometry3d::Identity();
@@ -122,6 +129,10 @@ struct State {
   ContactSet object_actee;
   std::uint8_t actee_arms = 0;  // arms touching the actee: bit 0 fixed, bit 1 moving
   ContactSet agent_actee;
+
+  // --- sensing: the last efforts, for sensor_latency (sized once by reset())
+  std::vector<double> effort_history;  // N, a ring, one per frame
+  std::int64_t history_head = 0;       // frames written
 
   // --- scratch: reusable query objects (not part of the simulated state)
   std::unique_ptr<ContactQuery> query;

@@ -91,6 +91,7 @@ std::string describe_dimension(const Dimension& d) {
       {dim::torque, "a torque (e.g. '0.02 N*m')"},
       {dim::rotational_damping, "a rotational damping (e.g. '0.001 N*m*s/rad')"},
       {dim::inertia, "a moment of inertia (e.g. '2e-5 kg*m^2')"},
+      {dim::damping, "a damping (e.g. '20 N*s/m')"},
       {dim::speed, "a speed (e.g. '5 cm/s')"},
       {dim::angular_speed, "an angular speed (e.g. '1 rad/s')"},
   };
@@ -201,9 +202,14 @@ std::string format_quantity(double si, const Dimension& d) {
       {dim::force, 1.0, "N"},         {dim::stiffness, 1.0, "N/m"},
       {dim::torque, 1.0, "N*m"},      {dim::rotational_damping, 1.0, "N*m*s/rad"},
       {dim::inertia, 1.0, "kg*m^2"},  {dim::speed, 1.0, "m/s"},
+      {dim::damping, 1.0, "N*s/m"},
       {dim::angular_speed, 1.0, "rad/s"}, {dim::cubic_stiffness, 1.0, "N/m^3"},
   };
   char buf[64];
+  if (d == dim::none) {
+    std::snprintf(buf, sizeof buf, "%.4g", si);
+    return buf;
+  }
   for (const Display& disp : kDisplay) {
     if (disp.d == d) {
       std::snprintf(buf, sizeof buf, "%.4g %s", si / disp.factor, disp.unit);

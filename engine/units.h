@@ -35,6 +35,7 @@ inline constexpr Dimension cubic_stiffness{{-2, 1, -2, 0}};  // N/m^3
 inline constexpr Dimension torque{{2, 1, -2, 0}};            // N*m
 inline constexpr Dimension rotational_damping{{2, 1, -1, -1}};  // N*m*s/rad
 inline constexpr Dimension inertia{{2, 1, 0, 0}};            // kg*m^2
+inline constexpr Dimension damping{{0, 1, -1, 0}};           // N*s/m
 inline constexpr Dimension speed{{1, 0, -1, 0}};             // m/s
 inline constexpr Dimension angular_speed{{0, 0, -1, 1}};     // rad/s
 }  // namespace dim

@@ -175,7 +175,8 @@ TEST(BadInputBase, NutcrackerIsValid) {
   EXPECT_DOUBLE_EQ(o.spring.position, 0.025);
   EXPECT_EQ(o.lever.pattern, LeverPattern::type2);
   EXPECT_EQ(o.parts.size(), 2u);
-  EXPECT_EQ(o.effects.size(), 2u);
+  EXPECT_EQ(o.effects.size(), 3u);  // pivot_friction, viscous_damping and the spring's preload
+  EXPECT_EQ(o.effects.back().kind, EffectKind::spring_preload);
   (void)compile(o, nullptr, nullptr, ModelOptions{});
 }
 
@@ -269,7 +270,7 @@ TEST(BadInputActee, ExtraKey) {
   const std::string e = actee_error(kWalnut + "colour: brown\n");
   EXPECT_THAT(e, HasSubstr("bad.yaml:9:1:"));
   EXPECT_THAT(e, HasSubstr("expected one of the keys of an actee file (actee, description, shape, "
-                           "mass, force_direction, limit, stiffness, breaks), found 'colour'"));
+                           "mass, force_direction, limit, stiffness, breaks, effects), found 'colour'"));
 }
 
 TEST(BadInputAgent, MisspeltFingerSaysDidYouMean) {
@@ -790,20 +791,21 @@ TEST(BadInputObject, UnknownEffectSaysDidYouMean) {
   const std::string e = object_error(replace_once(kNutcracker, "pivot_friction:", "pivot_fricton:"));
   EXPECT_THAT(e, HasSubstr("bad.yaml:33:3:"));
   EXPECT_THAT(e, HasSubstr("expected one of the keys of the effects (pivot_friction, viscous_damping, "
-                           "progressive_spring, arm_inertia), found 'pivot_fricton' (did you mean "
-                           "'pivot_friction'?)"));
+                           "spring_preload, progressive_spring, arm_inertia, gravity), found 'pivot_fricton' "
+                           "(did you mean 'pivot_friction'?)"));
 }
 
 TEST(BadInputObject, NegativeEffectParameter) {
   const std::string e = object_error(replace_once(kNutcracker, "torque: 0.01 N*m", "torque: -0.01 N*m"));
   EXPECT_THAT(e, HasSubstr("bad.yaml:33:28:"));
-  EXPECT_THAT(e, HasSubstr("expected a value of zero or more, found '-0.01 N*m'"));
+  EXPECT_THAT(e, HasSubstr("expected a value from 0 N*m to 100 N*m (friction torque, N*m), found '-0.01 N*m'"));
 }
 
 TEST(BadInputObject, ZeroArmInertia) {
   const std::string e = object_error(kNutcracker + "  arm_inertia: {inertia: 0 kg*m^2}\n");
   EXPECT_THAT(e, HasSubstr("bad.yaml:35:26:"));
-  EXPECT_THAT(e, HasSubstr("expected a value greater than zero, found '0 kg*m^2'"));
+  EXPECT_THAT(e, HasSubstr("expected a value above 0 kg*m^2 to 10 kg*m^2 (moment of inertia about the pivot, "
+                           "kg*m^2), found '0 kg*m^2'"));
 }
 
 TEST(BadInputObject, EffectWithoutValue) {

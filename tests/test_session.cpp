@@ -284,9 +284,15 @@ TEST(Grip, SqueezeClosesTheFreeLeverByItsArc) {
     step(s.model, *state, sample);
   }
   ASSERT_TRUE(state->grasped);
-  // Within the solver's first-order step (eq. 1 projects each frame's
-  // motion on the arm as it was): 1e-5 rad is 1.5 um at the thumb.
-  EXPECT_NEAR(state->theta, s.model.theta_rest - 0.030 / 0.150, 1e-5);
+  // The hand's target: within the first-order step of eq. 1 (each frame's
+  // motion projected on the arm as it was), 1e-5 rad is 1.5 um at the thumb.
+  EXPECT_NEAR(state->theta_command, s.model.theta_rest - 0.030 / 0.150, 1e-5);
+  // The arm lags it by the hand impedance's stretch, which carries the
+  // spring: f_a * b * (theta - command) * b = spring torque.
+  const double b = std::abs(state->effort_distance);
+  EXPECT_NEAR(s.model.force_gain * b * (state->theta - state->theta_command) * b, state->torque[kSpring] +
+              state->torque[kSpringPreload], 1e-9);
+  EXPECT_GT(state->theta - state->theta_command, 1e-4);
   EXPECT_TRUE(state->finger_on_arm[0] & 2);
 }
 

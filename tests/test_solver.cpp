@@ -10,11 +10,9 @@
 namespace afford::test {
 namespace {
 
-// Spring force from the spec alone: free length from the preload at rest.
+// Spring force from the spec alone: free at the rest angle, plus the preload.
 double expected_spring_force(const ObjectSpec& o, double theta) {
-  const double rest_length = std::abs(o.spring.position) * o.lever.theta_rest;  // + preload/k below
-  return o.spring.constant * (rest_length - std::abs(o.spring.position) * theta) +
-         o.spring.constant * (o.spring.rest_length - rest_length);
+  return o.spring.constant * std::abs(o.spring.position) * (o.lever.theta_rest - theta) + o.spring.preload;
 }
 
 TEST(Solver, ContactAngleMatchesWedgeGeometry) {
@@ -44,7 +42,11 @@ TEST(Solver, MomentBalanceWithoutActeeForEveryPattern) {
       EXPECT_NEAR(s.effort_force * b, expected_spring_force(o, s.theta) * std::abs(o.spring.position), 1e-9)
           << tool.name << " at " << s.theta;
       EXPECT_NEAR(s.torque[kStop], 0, 1e-12) << tool.name;
-      EXPECT_NEAR(s.theta, fraction * m.theta_max, 1e-3) << tool.name;
+      // The hand is a spring between the tracked thumb and the arm: its
+      // push is f_a times how far the arm lags the thumb, along the arc.
+      EXPECT_NEAR(s.effort_force, m.force_gain * b * (s.theta - s.theta_command), 1e-9) << tool.name;
+      EXPECT_GT(s.theta, s.theta_command) << tool.name;  // free closing lags the thumb
+      EXPECT_NEAR(s.theta_command, fraction * m.theta_max, 1e-3) << tool.name;
     }
   }
 }
@@ -63,8 +65,11 @@ TEST(Solver, ActeeForceFollowsMomentBalanceForEveryPattern) {
       ASSERT_TRUE(s.blocked) << tool.name;
       const double a = std::abs(tool.load), b = std::abs(s.effort_distance);
       const double spring_torque = expected_spring_force(o, s.theta) * std::abs(o.spring.position);
-      // The actee's reaction: its stiffness times the jaw's travel into it.
-      EXPECT_NEAR(s.actee_force, m.actee_stiffness * a * (s.contact_angle - s.theta), 1e-9);
+      // The actee's reaction: its stiffness times the jaw's travel into it,
+      // stiffened by h / (h - deflection) (the nut is h = 20 mm across).
+      const double deflection = a * (s.contact_angle - s.theta);
+      EXPECT_NEAR(s.actee_thickness, 0.020, 1e-12);
+      EXPECT_NEAR(s.actee_force, m.actee_stiffness * deflection * 0.020 / (0.020 - deflection), 1e-9);
       // F_ag * D_ag = S_k * d * D_s + F_acr * D_ac (the paper's eq. 5 would
       // have the ratios the other way round).
       EXPECT_NEAR(s.effort_force * b, spring_torque + s.actee_force * a, 1e-9 * (1 + s.effort_force)) << tool.name;
@@ -177,82 +182,24 @@ TEST(Solver, SpongeDeformsAndNeverBreaks) {
   EXPECT_GT(rig.state().actee_compression, 0.005);         // and visibly deformed
 }
 
-TEST(Solver, PivotFrictionGivesAHysteresisLoopOfTwiceItsTorque) {
-  const double friction = 0.05;  // N*m
-  const std::string yaml = tool_yaml("t2f", "type2", 0, 180, 50, 500, 30, 2, 110, 170, 20, 70,
-                                     "effects:\n  pivot_friction: {torque: 0.05 N*m}\n");
-  const ObjectSpec o = object_from(yaml);
-  const Model m = model_of(yaml, nullptr, 0);
-  Rig rig(m, 0.150);
-  rig.close_to(25 * kDeg);
-  const double close_excess = rig.state().effort_force * std::abs(rig.state().effort_distance) -
-                              expected_spring_force(o, rig.state().theta) * std::abs(o.spring.position);
-  const double close_force = rig.state().effort_force;
-  rig.close_to(15 * kDeg);
-  while (rig.state().theta < 25 * kDeg) rig.push(-2e-5);
-  const double open_excess = rig.state().effort_force * std::abs(rig.state().effort_distance) -
-                             expected_spring_force(o, rig.state().theta) * std::abs(o.spring.position);
-  EXPECT_NEAR(close_excess, friction, 1e-9);   // closing: friction adds to the spring
-  EXPECT_NEAR(open_excess, -friction, 1e-9);   // opening: it holds the arm back
-  // Loop width in effort force at the same angle: 2 * friction / D_ag.
-  EXPECT_NEAR(close_force - rig.state().effort_force, 2 * friction / 0.150, 0.02 * 2 * friction / 0.150);
-  // Switched off as data, the loop closes.
-  std::string off = yaml;
-  off.replace(off.find("0.05 N*m}"), 9, "0.05 N*m, enabled: false}");
-  const Model m_off = model_of(off, nullptr, 0);
-  Rig rig_off(m_off, 0.150);
-  rig_off.close_to(25 * kDeg);
-  EXPECT_EQ(rig_off.state().torque[kPivotFriction], 0);
-}
-
-TEST(Solver, ViscousDampingForceGrowsWithSpeed) {
-  const double c = 0.01;  // N*m*s/rad
-  const std::string yaml = tool_yaml("t2d", "type2", 0, 180, 50, 500, 30, 2, 110, 170, 20, 70,
-                                     "effects:\n  viscous_damping: {coefficient: 0.01 N*m*s/rad}\n");
-  const Model m = model_of(yaml, nullptr, 0);
-  double excess[2] = {0, 0};
-  const double steps[2] = {1e-5, 4e-5};  // m per frame: 10 and 40 mm/s at the thumb
-  for (int i = 0; i < 2; ++i) {
-    Rig rig(m, 0.150);
-    rig.push(0.01, steps[i]);
-    excess[i] = rig.state().torque[kViscousDamping];
-    const double omega = -steps[i] / std::abs(rig.state().effort_distance) / m.timestep;
-    EXPECT_NEAR(rig.state().omega, omega, 1e-4 * std::abs(omega));  // the rig moves on an arc
-    EXPECT_NEAR(excess[i], -c * rig.state().omega, 1e-12);
-  }
-  EXPECT_GT(excess[1], excess[0]);
-  EXPECT_NEAR(excess[1] / excess[0], 4.0, 1e-3);  // linear in speed
-}
-
-TEST(Solver, ProgressiveSpringAndArmInertiaTerms) {
-  const std::string yaml = tool_yaml("t2p", "type2", 0, 180, 50, 500, 30, 2, 110, 170, 20, 70,
-                                     "effects:\n  progressive_spring: {cubic: 1e7 N/m^3}\n"
-                                     "  arm_inertia: {inertia: 2e-4 kg*m^2}\n");
-  const Model m = model_of(yaml, nullptr, 0);
-  Rig rig(m, 0.150);
-  rig.push(0.02);
-  const State& s = rig.state();
-  EXPECT_NEAR(s.torque[kProgressiveSpring], 1e7 * std::pow(s.compression, 3) * 0.030, 1e-12);
-  EXPECT_NEAR(s.torque[kArmInertia], -2e-4 * s.alpha, 1e-12);
-  const double sum = s.torque[kSpring] + s.torque[kProgressiveSpring] + s.torque[kArmInertia];
-  EXPECT_NEAR(s.effort_force * std::abs(s.effort_distance), sum, 1e-9);
-}
-
 TEST(Solver, ThumbSpeedIsItsAdvanceAlongTheRotationDirection) {
   const Tool tool = tools_of_every_pattern()[0];
   const Model m = model_of(tool.yaml, nullptr, 0);
   Rig rig(m, tool.effort);
   const double theta = rig.state().theta;
   const double c = std::cos(theta), s = std::sin(theta);
+  const double command = rig.state().theta_command;
   rig.sample().fingertip[0] += Eigen::Vector3d(s, -c, 0) * 3e-5;  // along L_d
   rig.frame();
   EXPECT_NEAR(rig.state().thumb_speed, 3e-5 / m.timestep, 1e-9);  // eq. 2
-  EXPECT_NEAR(rig.state().theta, theta - 3e-5 / std::abs(rig.state().effort_distance), 1e-12);
-  // Motion along the arm does not turn the lever (eq. 1 projects it away).
+  EXPECT_NEAR(rig.state().theta_command, command - 3e-5 / std::abs(rig.state().effort_distance), 1e-12);
+  EXPECT_LT(rig.state().theta, theta);  // the arm follows, through the hand
+  // Motion along the arm does not move the hand's target (eq. 1 projects it away).
   const double theta2 = rig.state().theta;
+  const double command2 = rig.state().theta_command;
   rig.sample().fingertip[0] += Eigen::Vector3d(std::cos(theta2), std::sin(theta2), 0) * 1e-4;
   rig.frame();
-  EXPECT_NEAR(rig.state().theta, theta2, 1e-12);
+  EXPECT_NEAR(rig.state().theta_command, command2, 1e-12);
 }
 
 TEST(Solver, GraspedObjectAndHeldActeeMoveWithTheHand) {

@@ -1,0 +1,76 @@
+#include "terms.h"
+
+#include <cmath>
+#include <limits>
+
+namespace afford {
+
+namespace {
+constexpr double kStandardGravity = 9.80665;  // m/s^2, along the world's -z
+}  // namespace
+
+double spring_compression(const Model& m, double theta_rad) {
+  return std::abs(m.spring_position) * (m.theta_rest - theta_rad) + m.spring_preload / m.spring_constant;
+}
+
+double spring_force(const Model& m, double theta_rad) {
+  const double d = spring_compression(m, theta_rad);
+  return m.spring_constant * d + (d > 0 ? m.spring_cubic * d * d * d : 0.0);
+}
+
+SpringTorques spring_torques(const Model& m, double theta_rad) {
+  const double ds = std::abs(m.spring_position);
+  SpringTorques t;
+  t.linear = m.spring_constant * ds * (m.theta_rest - theta_rad) * ds;
+  t.preload = m.spring_preload * ds;
+  t.slope = -m.spring_constant * ds * ds;
+  if (m.spring_cubic > 0) {
+    const double d = spring_compression(m, theta_rad);
+    if (d > 0) {
+      t.progressive = m.spring_cubic * d * d * d * ds;
+      t.slope -= 3 * m.spring_cubic * d * d * ds * ds;
+    }
+  }
+  return t;
+}
+
+double actee_force_law(const Model& m, double deflection_m, double thickness_m, double* slope) {
+  if (deflection_m <= 0) {
+    *slope = 0;
+    return 0;
+  }
+  if (deflection_m >= thickness_m) {  // never reached by the solver: it brackets below
+    *slope = std::numeric_limits<double>::max();
+    return std::numeric_limits<double>::max();
+  }
+  double base = 0, base_slope = 0;
+  if (m.actee_exponent == 1) {
+    base = m.actee_stiffness * deflection_m;
+    base_slope = m.actee_stiffness;
+  } else {
+    const double r = m.actee_reference;
+    const double ratio = std::pow(deflection_m / r, m.actee_exponent);
+    base = m.actee_stiffness * r * ratio;
+    base_slope = m.actee_stiffness * m.actee_exponent * ratio * r / deflection_m;
+  }
+  const double room = 1.0 / (thickness_m - deflection_m);  // 1/m
+  const double factor = thickness_m * room;
+  *slope = base_slope * factor + base * factor * room;
+  return base * factor;
+}
+
+void gravity_coefficients(const Model& m, const Eigen::Matrix3d& object_rotation, double* c, double* s) {
+  *c = *s = 0;
+  if (!m.gravity) return;
+  // Weight in the object frame; the arm's centre turned by theta about z:
+  // torque_z = (R(theta) x) x w, which is linear in cos and sin.
+  const Eigen::Vector3d w = object_rotation.transpose() * Eigen::Vector3d(0, 0, -kStandardGravity * m.arm_mass);
+  const double x = m.arm_centre.x(), y = m.arm_centre.y();
+  *c = x * w.y() - y * w.x();
+  *s = -(x * w.x() + y * w.y());
+  // The extra amplitude closes the arm as extra weight would on a tool
+  // whose fixed arm lies level with the moving arm above it.
+  *c -= m.gravity_extra;
+}
+
+}  // namespace afford
