@@ -91,38 +91,47 @@ struct Balance {
     double hand_slope = 0, actee_slope = 0;
     const double hand_torque = hand(theta, &hand_slope) * b;
     const SpringTorques spring = spring_torques(m, theta);
-    const double opening = spring.linear + spring.preload + spring.progressive +
-                           actee_force(theta, &actee_slope) * a + g_cos * std::cos(theta) +
-                           g_sin * std::sin(theta);
+    double opening = spring.linear + spring.preload + spring.progressive + actee_force(theta, &actee_slope) * a;
+    double opening_slope = spring.slope + actee_slope * a;
+    if (m.gravity) {
+      const double c = std::cos(theta), sn = std::sin(theta);
+      opening += g_cos * c + g_sin * sn;
+      opening_slope += -g_cos * sn + g_sin * c;
+    }
     const double w = omega(theta);
     const double alpha = (w - omega0) / m.timestep;
-    const double opening_slope = spring.slope + actee_slope * a +
-                                 (m.gravity ? -g_cos * std::sin(theta) + g_sin * std::cos(theta) : 0.0);
     *slope = hand_slope * b - opening_slope + m.damping / m.timestep +
              m.arm_inertia / (m.timestep * m.timestep);
     return hand_torque - opening + m.damping * w + m.arm_inertia * alpha;
   }
 
-  // The theta in [lo, hi] where value() = target; lo or hi if it is outside.
-  double solve(double lo, double hi, double target) const {
-    double slope = 0;
-    double f_lo = value(lo, &slope) - target;
-    if (f_lo >= 0) return lo;
-    if (value(hi, &slope) - target <= 0) return hi;
-    double x = std::clamp(theta0, lo, hi);
+  // The theta in [lo, hi] where value() = target; lo or hi if it is
+  // outside. `from` is lo or hi, f_from = value(from) - target (its sign
+  // says the root lies towards the other end) and slope_from its slope.
+  // Newton's steps from there, kept inside the bracket by bisection; the
+  // other end is evaluated only when a step would pass it.
+  double solve(double lo, double hi, double target, double from, double f_from, double slope_from) const {
+    const bool from_hi = from == hi;
+    double x = from, f = f_from, slope = slope_from;
+    bool far_checked = false;
     for (int i = 0; i < 100; ++i) {
-      const double f = value(x, &slope) - target;
-      if (f == 0) return x;
-      if (f < 0) {
-        lo = x;
-        f_lo = f;
-      } else {
-        hi = x;
+      double next = slope > 0 ? x - f / slope : (from_hi ? lo : hi);
+      if (std::abs(next - x) <= 1e-13) return std::clamp(next, lo, hi);  // converged, rad
+      if (!(next > lo && next < hi)) {
+        if (!far_checked) {  // a step past the far end: is the root beyond it?
+          far_checked = true;
+          const double far = from_hi ? lo : hi;
+          double far_slope = 0;
+          const double f_far = value(far, &far_slope) - target;
+          if (from_hi ? f_far >= 0 : f_far <= 0) return far;
+        }
+        next = 0.5 * (lo + hi);  // bisect
       }
-      double next = slope > 0 ? x - f / slope : lo;
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect
-      if (std::abs(next - x) <= 1e-13 || hi - lo <= 1e-15) return next;  // rad
+      if (hi - lo <= 1e-15) return next;  // rad
       x = next;
+      f = value(x, &slope) - target;
+      if (f == 0) return x;
+      (f < 0 ? lo : hi) = x;
     }
     return x;
   }
@@ -216,10 +225,10 @@ void solve_lever(const Model& m, State& s) {
     friction = at_rest;  // stiction holds the arm
   } else if (at_rest > tf) {
     friction = tf;  // closing: friction opens
-    theta = eq.solve(lo, start, tf);
+    theta = start == lo ? lo : eq.solve(lo, start, tf, start, at_rest - tf, slope);
   } else {
     friction = -tf;
-    theta = eq.solve(start, hi, -tf);
+    theta = start == hi ? hi : eq.solve(start, hi, -tf, start, at_rest + tf, slope);
   }
 
   // The terms at the solution, each named; the stop takes what is left when
@@ -244,7 +253,7 @@ void solve_lever(const Model& m, State& s) {
   s.torque[kPivotFriction] = friction;
   s.torque[kViscousDamping] = -m.damping * omega;
   s.torque[kArmInertia] = -m.arm_inertia * alpha;
-  s.torque[kGravity] = eq.g_cos * std::cos(theta) + eq.g_sin * std::sin(theta);
+  s.torque[kGravity] = m.gravity ? eq.g_cos * std::cos(theta) + eq.g_sin * std::sin(theta) : 0.0;
   double sum = 0;
   for (int t = 0; t < kTermCount; ++t) sum += t == kStop ? 0.0 : s.torque[static_cast<size_t>(t)];
   s.torque[kStop] = resting ? s.effort_force * eq.b - sum : 0.0;

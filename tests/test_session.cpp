@@ -4,7 +4,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
@@ -473,6 +475,56 @@ TEST(Run, AWholeSessionIsDeterministic) {
   EXPECT_EQ(first.timeline, second.timeline);
   // A session loaded again gives the same bytes too.
   EXPECT_EQ(run_with_writers(load_session(kSource + "/sessions/paper-tongs.yaml")).trace, first.trace);
+}
+
+}  // namespace
+}  // namespace afford::test
+
+namespace afford::test {
+namespace {
+
+// Watches every frame: the hand's push never above the limit in force.
+struct HandLimitWatch : Observer {
+  int frames = 0, over = 0, free_closing = 0;
+  double peak = 0;
+  void on_frame(const Model&, const State& s, const RuleSet&, const RuleState&) override {
+    ++frames;
+    if (s.effort_force > s.max_force) ++over;
+    if (s.grasped && !s.blocked && s.omega < 0) ++free_closing;
+    peak = std::max(peak, s.effort_force);
+  }
+};
+
+TEST(HandLimit, NeverExceededInAnyFrameOfAnyShippedSession) {
+  // From trace.csv (the effort column against the agent's max_force) and
+  // from the state (against the limit in force, capped by the grasp type).
+  int sessions = 0, free_closing = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(AFFORD_SOURCE_DIR) + "/sessions")) {
+    if (entry.path().extension() != ".yaml") continue;
+    const CompiledSession s = load_session(entry.path().string());
+    ScriptedAgent agent(s.script);
+    Capture trace;
+    TraceWriter writer(trace.file);
+    HandLimitWatch watch;
+    Observer* observers[] = {&writer, &watch};
+    run_session(s.model, *s.rules, agent, observers);
+    const std::string csv = trace.text();
+    std::istringstream rows(csv);
+    std::string row;
+    std::getline(rows, row);  // header: t,angle,effort_force,...
+    int checked = 0;
+    while (std::getline(rows, row)) {
+      const size_t a = row.find(','), b = row.find(',', a + 1), c = row.find(',', b + 1);
+      ASSERT_LE(std::stod(row.substr(b + 1, c - b - 1)), s.model.max_force) << entry.path() << ": " << row;
+      ++checked;
+    }
+    EXPECT_EQ(checked, watch.frames) << entry.path();
+    EXPECT_EQ(watch.over, 0) << entry.path();
+    free_closing += watch.free_closing;
+    ++sessions;
+  }
+  EXPECT_GE(sessions, 5);
+  EXPECT_GT(free_closing, 100);  // the sessions close the tools freely too
 }
 
 }  // namespace
