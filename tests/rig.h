@@ -165,3 +165,30 @@ class Rig {
 };
 
 }  // namespace afford::test
+
+namespace afford::test {
+
+// t2 with every effect switched on, a nut with a power law, and a sensor
+// delay: the frame's every path at once.
+inline Model model_with_every_effect() {
+  const std::string tool = tool_yaml("t2", "type2", 0, 180, 50, 500, 30, 2, 110, 170, 20, 70,
+                                     "effects:\n  pivot_friction: {torque: 0.02 N*m}\n"
+                                     "  viscous_damping: {coefficient: 0.002 N*m*s/rad}\n"
+                                     "  progressive_spring: {cubic: 1e7 N/m^3}\n"
+                                     "  arm_inertia: {inertia: 2e-4 kg*m^2}\n"
+                                     "  gravity: {extra_torque: 0.05 N*m}\n");
+  const std::string nut = nut_yaml(150) + "effects:\n  actee_compliance: {exponent: 1.5, reference: 0.5 mm}\n";
+  const ObjectSpec o = object_from(tool);
+  const ActeeSpec a = actee_from(nut);
+  const AgentSpec h = hand();
+  ModelOptions options;
+  options.actee.distance = 0.040;
+  EffectSpec latency;
+  latency.name = "sensor_latency";
+  latency.kind = EffectKind::sensor_latency;
+  latency.param[0] = 0.0035;
+  options.effects.push_back(latency);
+  return compile(o, &a, &h, options);
+}
+
+}  // namespace afford::test

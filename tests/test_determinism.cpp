@@ -52,6 +52,17 @@ TEST(Determinism, ThreadsSharingOneModelAgree) {
   for (const auto& r : results) EXPECT_EQ(r, reference);
 }
 
+TEST(Determinism, EveryEffectOnThreadsAgreeBitForBit) {
+  const Model m = model_with_every_effect();
+  const std::vector<std::uint64_t> reference = run_scenario(m, 0.150);
+  std::vector<std::vector<std::uint64_t>> results(3);
+  std::vector<std::thread> threads;
+  for (auto& r : results) threads.emplace_back([&m, &r] { r = run_scenario(m, 0.150); });
+  for (auto& t : threads) t.join();
+  for (const auto& r : results) EXPECT_EQ(r, reference);
+  EXPECT_NE(reference.front(), reference.back());
+}
+
 TEST(Determinism, HashChangesWithAnySimulatedField) {
   const Tool tool = tools_of_every_pattern()[0];
   const Model m = model_of(tool.yaml, nullptr, 0);
