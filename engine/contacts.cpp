@@ -9,20 +9,34 @@
 namespace afford {
 namespace {
 
+// Every part's world pose and box at the solved angle, once a frame.
+void place_parts(const Model& m, State& s) {
+  const Eigen::Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
+  for (size_t i = 0; i < m.parts.size(); ++i) {
+    const ModelPart& part = m.parts[i];
+    s.part_pose[i] = (part.arm == Arm::moving ? moving : s.object_pose) * part.in_arm;
+    s.part_box[i] = world_box(part.geometry, s.part_pose[i]);
+  }
+}
+
+// A fingertip sphere's world box.
+WorldBox tip_box(const Model& m, size_t finger, const Eigen::Vector3d& centre) {
+  return {centre, Eigen::Vector3d::Constant(m.tip_radius[finger])};
+}
+
 void agent_object(const Model& m, State& s) {
   s.agent_object.clear();
   s.finger_on_arm.fill(0);
-  const Eigen::Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
   ContactPoint c;
   for (size_t f = 0; f < kFingers; ++f) {
     Eigen::Isometry3d tip = Eigen::Isometry3d::Identity();
     tip.translation() = (f == 0 && s.grasped) ? s.thumb_proxy : s.fingertip[f];
-    for (const ModelPart& part : m.parts) {
-      const Eigen::Isometry3d pose = (part.arm == Arm::moving ? moving : s.object_pose) * part.in_arm;
-      if (boxes_apart(m.fingertip[f], tip, part.geometry, pose, m.contact_tolerance)) continue;
-      if (s.query->contact(m.fingertip[f], tip, part.geometry, pose, m.contact_tolerance, &c)) {
+    const WorldBox box = tip_box(m, f, tip.translation());
+    for (size_t i = 0; i < m.parts.size(); ++i) {
+      if (boxes_apart(box, s.part_box[i], m.contact_tolerance)) continue;
+      if (s.query->contact(m.fingertip[f], tip, m.parts[i].geometry, s.part_pose[i], m.contact_tolerance, &c)) {
         s.agent_object.add(c);
-        s.finger_on_arm[f] |= static_cast<std::uint8_t>(part.arm == Arm::moving ? 2 : 1);
+        s.finger_on_arm[f] |= static_cast<std::uint8_t>(m.parts[i].arm == Arm::moving ? 2 : 1);
       }
     }
   }
@@ -47,12 +61,12 @@ void object_actee(const Model& m, State& s) {
     }
     return;
   }
-  const Eigen::Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
   ContactPoint c;
-  for (const ModelPart& part : m.parts) {
-    const Eigen::Isometry3d pose = (part.arm == Arm::moving ? moving : s.object_pose) * part.in_arm;
-    if (boxes_apart(part.geometry, pose, m.actee(), s.actee_pose, m.contact_tolerance)) continue;
-    if (s.query->contact(part.geometry, pose, m.actee(), s.actee_pose, m.contact_tolerance, &c)) {
+  const WorldBox actee = world_box(m.actee(), s.actee_pose);
+  for (size_t i = 0; i < m.parts.size(); ++i) {
+    const ModelPart& part = m.parts[i];
+    if (boxes_apart(s.part_box[i], actee, m.contact_tolerance)) continue;
+    if (s.query->contact(part.geometry, s.part_pose[i], m.actee(), s.actee_pose, m.contact_tolerance, &c)) {
       s.object_actee.add(c);
       s.actee_arms |= static_cast<std::uint8_t>(part.arm == Arm::moving ? 2 : 1);
     }
@@ -62,10 +76,11 @@ void object_actee(const Model& m, State& s) {
 void agent_actee(const Model& m, State& s) {
   s.agent_actee.clear();
   ContactPoint c;
+  const WorldBox actee = world_box(m.actee(), s.actee_pose);
   for (size_t f = 0; f < kFingers; ++f) {
     Eigen::Isometry3d tip = Eigen::Isometry3d::Identity();
     tip.translation() = s.fingertip[f];
-    if (boxes_apart(m.fingertip[f], tip, m.actee(), s.actee_pose, m.contact_tolerance)) continue;
+    if (boxes_apart(tip_box(m, f, s.fingertip[f]), actee, m.contact_tolerance)) continue;
     if (s.query->contact(m.fingertip[f], tip, m.actee(), s.actee_pose, m.contact_tolerance, &c)) {
       s.agent_actee.add(c);
     }
@@ -75,6 +90,7 @@ void agent_actee(const Model& m, State& s) {
 }  // namespace
 
 void find_contacts(const Model& m, State& s) {
+  place_parts(m, s);
   agent_object(m, s);
   // A broken actee is fragments: nothing left to touch or grip (from the
   // frame after the break: on that frame the jaws still touched it).

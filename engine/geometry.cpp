@@ -416,18 +416,17 @@ bool ContactQuery::contact(const Geometry& a, const Eigen::Isometry3d& pose_a, c
 
 // ---------------------------------------------------------------- boxes_apart
 
+WorldBox world_box(const Geometry& g, const Eigen::Isometry3d& pose) {
+  // A rotated box's world extent is |R| times its half sizes.
+  const Eigen::AlignedBox3d& local = g.local_box();
+  return {pose * local.center(), pose.linear().cwiseAbs() * (0.5 * local.sizes())};
+}
+
 bool boxes_apart(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
                  const Eigen::Isometry3d& pose_b, double margin) {
-  // A rotated box's world extent is |R| times its half sizes. The boxes are
-  // apart when they are more than margin apart along some world axis; then
-  // the shapes inside are more than margin apart too.
-  const Eigen::AlignedBox3d& la = a.local_box();
-  const Eigen::AlignedBox3d& lb = b.local_box();
-  const Vector3d ca = pose_a * la.center();
-  const Vector3d cb = pose_b * lb.center();
-  const Vector3d ha = pose_a.linear().cwiseAbs() * (0.5 * la.sizes());
-  const Vector3d hb = pose_b.linear().cwiseAbs() * (0.5 * lb.sizes());
-  return ((ca - cb).cwiseAbs() - ha - hb).maxCoeff() > margin;
+  // Apart when more than margin apart along some world axis; then the
+  // shapes inside are more than margin apart too.
+  return boxes_apart(world_box(a, pose_a), world_box(b, pose_b), margin);
 }
 
 }  // namespace afford

@@ -78,4 +78,15 @@ class ContactQuery {
 bool boxes_apart(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
                  const Eigen::Isometry3d& pose_b, double margin);
 
+// The same in two steps, for a frame that tests one shape against several:
+// a placed shape's world box once, then any pair of boxes.
+struct WorldBox {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // m, world
+  Eigen::Vector3d half = Eigen::Vector3d::Zero();    // m, half extents along the world axes
+};
+WorldBox world_box(const Geometry& g, const Eigen::Isometry3d& pose);
+inline bool boxes_apart(const WorldBox& a, const WorldBox& b, double margin) {
+  return ((a.centre - b.centre).cwiseAbs() - a.half - b.half).maxCoeff() > margin;
+}
+
 }  // namespace afford

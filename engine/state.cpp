@@ -35,6 +35,8 @@ void reset(const Model& m, State& s) {
   s.object_pose = m.object_start;
   s.theta = s.theta_command = m.theta_rest;
   s.max_force = m.max_force;
+  s.part_pose.resize(m.parts.size());
+  s.part_box.resize(m.parts.size());
   if (m.has_actee) {
     s.actee_pose = m.actee_start;
     s.actee_start_position = m.actee_start.translation();

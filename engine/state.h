@@ -134,7 +134,9 @@ struct State {
   std::vector<double> effort_history;  // N, a ring, one per frame
   std::int64_t history_head = 0;       // frames written
 
-  // --- scratch: reusable query objects (not part of the simulated state)
+  // --- scratch: not part of the simulated state
+  std::vector<Eigen::Isometry3d> part_pose;  // per model part, world, this frame (sized once by reset())
+  std::vector<WorldBox> part_box;            // their world boxes
   std::unique_ptr<ContactQuery> query;
 };
 
