@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <unistd.h>
 
+#include "data_files.h"
 #include "grasps.h"
 #include "load.h"
 #include "units.h"
@@ -11,76 +12,9 @@
 namespace afford {
 namespace {
 
-namespace fs = std::filesystem;
-
 constexpr double kDefaultTimestep = 1e-3;          // s
 constexpr double kDefaultContactTolerance = 5e-4;  // m
 constexpr double kMaxTimestep = 0.1;               // s: coarser is no simulation of a hand
-
-// The node of `key` itself in a mapping (errors about the key: a missing file).
-Node key_node(const Node& map, std::string_view key) {
-  for (auto it = map.yaml().begin(); it != map.yaml().end(); ++it) {
-    if (it->first.Scalar() == key) return map.child(it->first);
-  }
-  return map;
-}
-
-class Files {
- public:
-  Files(const Node& root, std::vector<std::string>* read) : read_(read) {
-    base_ = fs::path(root.loc().file).parent_path();
-  }
-
-  // The path a `key: path` names, resolved against the session's folder,
-  // checked to be a readable file (reported at the key) and recorded.
-  std::string resolve(const Node& map, std::string_view key, const Node& value) {
-    const std::string given = read_string(value);
-    if (given.empty()) value.fail("a path to a file");
-    fs::path p(given);
-    if (p.is_relative()) p = base_ / p;
-    const std::string path = p.lexically_normal().string();
-    const std::string expected =
-        "a readable file '" + given + "'" + (fs::path(given).is_relative() ? " (relative to the session's folder)" : "");
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) key_node(map, key).fail(expected, "a directory");
-    if (!fs::is_regular_file(path, ec) || ::access(path.c_str(), R_OK) != 0) key_node(map, key).fail(expected, "none");
-    read_->push_back(path);
-    return path;
-  }
-
-  // A path, or the file's content in place (a mapping).
-  Node document(const Node& map, std::string_view key, const Node& value) {
-    if (value.is_map()) return value;
-    if (!value.is_scalar()) value.fail("a path to a file, or the file's content as a mapping");
-    return load_yaml_file(resolve(map, key, value));
-  }
-
- private:
-  fs::path base_;
-  std::vector<std::string>* read_;
-};
-
-void read_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOptions* options) {
-  MapReader m(node, "the actee", {"file", "at", "position", "rotation"});
-  *actee = read_actee(files.document(node, "file", m.required("file")));
-  if (m.has("at") && m.has("position")) {
-    key_node(node, "position").fail("either 'at' (on the fixed jaw) or 'position' (in the world)", "both");
-  }
-  if (std::optional<Node> at = m.optional("at")) {
-    if (m.has("rotation")) key_node(node, "rotation").fail("'rotation' only with 'position'", "'at'");
-    options->actee.in_jaws = true;
-    options->actee.distance = read_quantity(*at, dim::length);
-    options->actee.loc = at->loc();
-    return;
-  }
-  if (!m.has("position")) node.fail("key 'at' (a distance on the fixed jaw) or 'position' (in the world)", "neither");
-  const PoseSpec pose = read_pose(m);
-  options->actee.in_jaws = false;
-  options->actee.world.setIdentity();
-  options->actee.world.linear() = pose.rotation;
-  options->actee.world.translation() = pose.position;
-  options->actee.loc = key_node(node, "position").loc();
-}
 
 // `camera: {position, target, up?, fov?}`: eye and target apart, up not
 // along the view, a field of view inside (0, 180) deg.
@@ -118,7 +52,7 @@ CompiledSession read_session(const Node& root) {
   CompiledSession s;
   s.file = root.loc().file;
   s.files.push_back(s.file);
-  Files files(root, &s.files);
+  Files files(root, "session", &s.files);
   s.name = read_name(m.required("session"));
   s.description = read_string(m.required("description"));
 

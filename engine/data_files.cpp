@@ -1,0 +1,68 @@
+#include "data_files.h"
+
+#include <unistd.h>
+
+#include "load.h"
+#include "units.h"
+
+namespace afford {
+
+namespace fs = std::filesystem;
+
+Node key_node(const Node& map, std::string_view key) {
+  for (auto it = map.yaml().begin(); it != map.yaml().end(); ++it) {
+    if (it->first.Scalar() == key) return map.child(it->first);
+  }
+  return map;
+}
+
+Files::Files(const Node& root, std::string kind, std::vector<std::string>* read)
+    : kind_(std::move(kind)), read_(read) {
+  base_ = fs::path(root.loc().file).parent_path();
+}
+
+std::string Files::resolve(const Node& map, std::string_view key, const Node& value) {
+  const std::string given = read_string(value);
+  if (given.empty()) value.fail("a path to a file");
+  fs::path p(given);
+  if (p.is_relative()) p = base_ / p;
+  const std::string path = p.lexically_normal().string();
+  const std::string expected =
+      "a readable file '" + given + "'" + (fs::path(given).is_relative() ? " (relative to the " + kind_ + "'s folder)" : "");
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) key_node(map, key).fail(expected, "a directory");
+  if (!fs::is_regular_file(path, ec) || ::access(path.c_str(), R_OK) != 0) key_node(map, key).fail(expected, "none");
+  read_->push_back(path);
+  return path;
+}
+
+Node Files::document(const Node& map, std::string_view key, const Node& value) {
+  if (value.is_map()) return value;
+  if (!value.is_scalar()) value.fail("a path to a file, or the file's content as a mapping");
+  return load_yaml_file(resolve(map, key, value));
+}
+
+
+void read_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOptions* options) {
+  MapReader m(node, "the actee", {"file", "at", "position", "rotation"});
+  *actee = read_actee(files.document(node, "file", m.required("file")));
+  if (m.has("at") && m.has("position")) {
+    key_node(node, "position").fail("either 'at' (on the fixed jaw) or 'position' (in the world)", "both");
+  }
+  if (std::optional<Node> at = m.optional("at")) {
+    if (m.has("rotation")) key_node(node, "rotation").fail("'rotation' only with 'position'", "'at'");
+    options->actee.in_jaws = true;
+    options->actee.distance = read_quantity(*at, dim::length);
+    options->actee.loc = at->loc();
+    return;
+  }
+  if (!m.has("position")) node.fail("key 'at' (a distance on the fixed jaw) or 'position' (in the world)", "neither");
+  const PoseSpec pose = read_pose(m);
+  options->actee.in_jaws = false;
+  options->actee.world.setIdentity();
+  options->actee.world.linear() = pose.rotation;
+  options->actee.world.translation() = pose.position;
+  options->actee.loc = key_node(node, "position").loc();
+}
+
+}  // namespace afford
