@@ -57,7 +57,7 @@ void compile_parts(const ObjectSpec& o, Model& m) {
 // The effects of the object, then the actee's, then those a measurement
 // gives, which replace one of the same name; then their numbers, resolved
 // for the solver.
-void compile_effects(const ObjectSpec& o, const ActeeSpec* a, const ModelOptions& options, Model& m) {
+void compile_effects(const ObjectSpec* o, const ActeeSpec* a, const ModelOptions& options, Model& m) {
   auto add = [&m](const std::vector<EffectSpec>& list) {
     for (const EffectSpec& e : list) {
       const ModelEffect effect{e.kind, e.name, e.enabled, e.param, e.loc};
@@ -69,7 +69,7 @@ void compile_effects(const ObjectSpec& o, const ActeeSpec* a, const ModelOptions
       }
     }
   };
-  add(o.effects);
+  if (o != nullptr) add(o->effects);
   if (a != nullptr) add(a->effects);
   add(options.effects);
   for (const ModelEffect& e : m.effects) {
@@ -165,9 +165,18 @@ Model compile(const ObjectSpec& object, const ActeeSpec* actee, const AgentSpec*
   compile_lever(object, m);                         // lever, spring, regions, pose
   compile_parts(object, m);                         // FCL shapes of the arms
   if (actee != nullptr) compile_actee(*actee, options, m);  // shape, limit, placement
-  compile_effects(object, actee, options, m);       // optional terms, resolved
+  compile_effects(&object, actee, options, m);      // optional terms, resolved
   if (agent != nullptr) compile_agent(*agent, m);   // fingertips, joint ranges, f_a
   compile_grasps(options.grasps, m);                // taxonomy: flat joint ranges
+  return m;
+}
+
+Model compile_actee_only(const ActeeSpec& actee, const ModelOptions& options) {
+  Model m;
+  ModelOptions free = options;
+  free.actee.in_jaws = false;  // no jaws to rest in
+  compile_actee(actee, free, m);
+  compile_effects(nullptr, &actee, options, m);
   return m;
 }
 

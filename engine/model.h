@@ -130,6 +130,10 @@ struct Model {
 Model compile(const ObjectSpec& object, const ActeeSpec* actee, const AgentSpec* agent,
               const ModelOptions& options);
 
+// A model of the actee alone (its law, limit and effects, and those the
+// options give), for a measurement between plates. Not for step().
+Model compile_actee_only(const ActeeSpec& actee, const ModelOptions& options);
+
 // A model of the hand alone (no object, no actee): what a device's report
 // decoder checks samples against. Not for step().
 Model compile_agent_only(const AgentSpec& agent);

@@ -35,6 +35,11 @@ SpringTorques spring_torques(const Model& m, double theta_rad) {
 }
 
 double actee_force_law(const Model& m, double deflection_m, double thickness_m, double* slope) {
+  return actee_law(m.actee_stiffness, m.actee_exponent, m.actee_reference, deflection_m, thickness_m, slope);
+}
+
+double actee_law(double stiffness, double exponent, double reference, double deflection_m, double thickness_m,
+                 double* slope) {
   if (deflection_m <= 0) {
     *slope = 0;
     return 0;
@@ -44,14 +49,13 @@ double actee_force_law(const Model& m, double deflection_m, double thickness_m, 
     return std::numeric_limits<double>::max();
   }
   double base = 0, base_slope = 0;
-  if (m.actee_exponent == 1) {
-    base = m.actee_stiffness * deflection_m;
-    base_slope = m.actee_stiffness;
+  if (exponent == 1) {
+    base = stiffness * deflection_m;
+    base_slope = stiffness;
   } else {
-    const double r = m.actee_reference;
-    const double ratio = std::pow(deflection_m / r, m.actee_exponent);
-    base = m.actee_stiffness * r * ratio;
-    base_slope = m.actee_stiffness * m.actee_exponent * ratio * r / deflection_m;
+    const double ratio = std::pow(deflection_m / reference, exponent);
+    base = stiffness * reference * ratio;
+    base_slope = stiffness * exponent * ratio * reference / deflection_m;
   }
   const double room = 1.0 / (thickness_m - deflection_m);  // 1/m
   const double factor = thickness_m * room;

@@ -37,6 +37,11 @@ SpringTorques spring_torques(const Model& m, double theta_rad);
 // deflection/thickness (0.6 % for an egg at its limit).
 double actee_force_law(const Model& m, double deflection_m, double thickness_m, double* slope);
 
+// The same law for given parameters: stiffness (N/m), exponent (1: linear)
+// and reference deflection (m, unused when linear).
+double actee_law(double stiffness, double exponent, double reference, double deflection_m, double thickness_m,
+                 double* slope);
+
 // Gravity's torque on the moving arm is c * cos(theta) + s * sin(theta)
 // for an object turned by `object_rotation` in the world (z up); fills c and
 // s (N*m), gravity's extra amplitude included. Zero when gravity is off.

@@ -1,0 +1,320 @@
+#include "diagnose.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace afford {
+namespace {
+
+constexpr double kMatched = 1.3;        // a held-out RMSE within this factor of the noise is the noise
+constexpr double kRealMargin = 0.05;    // an effect must cut the held-out RMSE by this fraction
+constexpr double kAiccMargin = 10;      // and the training AICc by this much
+constexpr double kAlike = 0.1;          // a runner-up within this fraction of the best's gain is as good
+constexpr int kMaxEffects = 3;
+constexpr int kLags = 20;               // Ljung-Box
+constexpr size_t kFolds = 5;            // cross-validation folds, at most
+
+// A single trace is cut in two: fit on its first half, judge on its second.
+std::vector<Replay> halves(const Replay& r) {
+  std::vector<Replay> out(2);
+  const size_t mid = r.t.size() / 2;
+  auto slice = [&](Replay& h, size_t from, size_t to) {
+    auto cut = [&](const auto& v) { return std::decay_t<decltype(v)>(v.begin() + static_cast<long>(from), v.begin() + static_cast<long>(to)); };
+    h.file = r.file + (from == 0 ? " (first half)" : " (second half)");
+    h.rig = r.rig;
+    h.to_newtons = r.to_newtons;
+    h.t = cut(r.t);
+    h.x = cut(r.x);
+    h.rate = cut(r.rate);
+    h.accel = cut(r.accel);
+    h.measured = cut(r.measured);
+    h.nominal = cut(r.nominal);
+    h.deflection = cut(r.deflection);
+    if (!r.actee_measured.empty()) {
+      h.actee_measured = cut(r.actee_measured);
+      h.actee_nominal = cut(r.actee_nominal);
+    }
+    h.phase = cut(r.phase);
+    h.fitted = cut(r.fitted);
+  };
+  slice(out[0], 0, mid);
+  slice(out[1], mid, r.t.size());
+  return out;
+}
+
+// The measurement's own noise: white noise of deviation s gives second
+// differences of deviation s * sqrt(6); a smooth signal adds little to them.
+// Their median absolute deviation (times 1.4826 for a normal law) is not
+// moved by the few jumps of a signal, where friction changes sign.
+double noise_of(const std::vector<Replay>& replays) {
+  std::vector<double> d2;
+  for (const Replay& r : replays) {
+    for (size_t i = 0; i + 2 < r.t.size(); ++i) {
+      if (!r.fitted[i] || !r.fitted[i + 1] || !r.fitted[i + 2]) continue;
+      d2.push_back(std::abs(r.measured[i] - 2 * r.measured[i + 1] + r.measured[i + 2]) * r.to_newtons);
+    }
+  }
+  if (d2.empty()) return 0.0;
+  auto mid = d2.begin() + static_cast<long>(d2.size() / 2);
+  std::nth_element(d2.begin(), mid, d2.end());
+  return 1.4826 * *mid / std::sqrt(6.0);
+}
+
+// 99 % point of chi-square with k degrees of freedom (Wilson-Hilferty).
+double chi2_99(int k) {
+  const double a = 2.0 / (9.0 * k);
+  return k * std::pow(1 - a + 2.3263 * std::sqrt(a), 3);
+}
+
+double correlation(const std::vector<double>& a, const std::vector<double>& b) {
+  double ma = 0, mb = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    ma += a[i];
+    mb += b[i];
+  }
+  ma /= static_cast<double>(a.size());
+  mb /= static_cast<double>(b.size());
+  double sab = 0, saa = 0, sbb = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
+}
+
+// What a residual moves with most: direction, speed, acceleration, angle
+// (or displacement), over the fitted samples of the replays.
+void what_it_follows(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& residual,
+                     std::string* name, double* corr) {
+  std::vector<double> e, dir, speed, accel, x;
+  for (size_t i = 0; i < replays.size(); ++i) {
+    const Replay& r = replays[i];
+    for (size_t s = 0; s < r.t.size(); ++s) {
+      if (!r.fitted[s]) continue;
+      e.push_back(residual[i][s]);
+      dir.push_back(r.rate[s] > 0 ? 1.0 : (r.rate[s] < 0 ? -1.0 : 0.0));
+      speed.push_back(r.rate[s]);
+      accel.push_back(r.accel[s]);
+      x.push_back(r.x[s]);
+    }
+  }
+  const bool lever = replays.front().rig == Rig::lever;
+  const std::pair<const char*, const std::vector<double>*> signals[] = {
+      {"the direction of motion", &dir}, {"the speed", &speed}, {"the acceleration", &accel},
+      {lever ? "the angle" : "the displacement", &x}};
+  *corr = 0;
+  *name = "nothing measured";
+  if (e.size() < 3) return;
+  for (const auto& [n, v] : signals) {
+    const double c = correlation(e, *v);
+    if (std::abs(c) > std::abs(*corr)) {
+      *corr = c;
+      *name = n;
+    }
+  }
+}
+
+ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& residual,
+                       const std::vector<size_t>& which) {
+  // Autocorrelations within each trace's fitted stretches, pooled.
+  double c0 = 0;
+  std::vector<double> ck(kLags + 1, 0.0);
+  size_t n = 0;
+  for (size_t i : which) {
+    const Replay& r = replays[i];
+    const std::vector<double>& e = residual[i];
+    double mean = 0;
+    size_t m = 0;
+    for (size_t s = 0; s < e.size(); ++s) {
+      if (r.fitted[s]) {
+        mean += e[s];
+        ++m;
+      }
+    }
+    if (m == 0) continue;
+    mean /= static_cast<double>(m);
+    n += m;
+    for (size_t s = 0; s < e.size(); ++s) {
+      if (!r.fitted[s]) continue;
+      c0 += (e[s] - mean) * (e[s] - mean);
+      for (int k = 1; k <= kLags && s + static_cast<size_t>(k) < e.size(); ++k) {
+        if (r.fitted[s + static_cast<size_t>(k)]) ck[static_cast<size_t>(k)] += (e[s] - mean) * (e[s + static_cast<size_t>(k)] - mean);
+      }
+    }
+  }
+  ResidualTest t;
+  t.threshold = chi2_99(kLags);
+  if (n <= static_cast<size_t>(kLags) || c0 <= 0) {
+    t.white = true;
+    return t;
+  }
+  const double nn = static_cast<double>(n);
+  for (int k = 1; k <= kLags; ++k) {
+    const double rho = ck[static_cast<size_t>(k)] / c0;
+    t.q += rho * rho / (nn - k);
+  }
+  t.q *= nn * (nn + 2);
+  t.white = t.q <= t.threshold;
+  return t;
+}
+
+std::string effects_text(const std::vector<EffectKind>& set) {
+  std::string s;
+  for (EffectKind k : set) s += (s.empty() ? "" : " + ") + std::string(manifest_of(k).name);
+  return s.empty() ? "the nominal model" : s;
+}
+
+}  // namespace
+
+const char* verdict_name(Verdict v) {
+  static const char* const kNames[] = {"none", "explained", "ambiguous", "unexplained"};
+  return kNames[static_cast<int>(v)];
+}
+
+Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
+  Diagnosis d;
+  d.measurement = m.name;
+  const Model model = m.rig == Rig::lever ? compile_measurement(m) : compile_actee_only(*m.actee, m.options);
+  std::vector<Replay> replays = m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m);
+  // Cross-validation: each fold's traces are judged by a fit on the others
+  // (a single trace is cut in halves, each judged by the other); the
+  // parameters reported come from a fit on every trace.
+  if (replays.size() == 1) replays = halves(replays.front());
+  const size_t folds = std::min<size_t>(replays.size(), kFolds);
+  std::vector<size_t> all(replays.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+  std::vector<Fitter> fold_fitters;
+  std::vector<std::vector<size_t>> judged(folds);
+  for (size_t f = 0; f < folds; ++f) {
+    std::vector<size_t> train;
+    for (size_t i : all) (i % folds == f ? judged[f] : train).push_back(i);
+    fold_fitters.emplace_back(model, replays, train, judged[f]);
+  }
+  for (const Replay& r : replays) d.judged_on.push_back(r.file);
+  d.folds = folds;
+  d.noise = noise_of(replays);
+  const Fitter fitter(model, replays, all, {});
+  std::vector<EffectKind> library = options.library.empty() ? fitter.candidates() : options.library;
+  const std::vector<EffectKind> applicable = fitter.candidates();
+  std::erase_if(library, [&](EffectKind k) { return std::find(applicable.begin(), applicable.end(), k) == applicable.end(); });
+  // A set's parameters on every trace, its score on the folds.
+  auto score = [&](const std::vector<EffectKind>& set) {
+    SetFit f = fitter.fit(set);
+    double sq = 0;
+    size_t n = 0;
+    for (const Fitter& fold : fold_fitters) {
+      const SetFit g = fold.fit(set);
+      f.valid = f.valid && g.valid;
+      sq += g.rmse_test * g.rmse_test * static_cast<double>(g.n_test);
+      n += g.n_test;
+    }
+    f.rmse_test = n > 0 ? std::sqrt(sq / static_cast<double>(n)) : 0.0;
+    f.n_test = n;
+    return f;
+  };
+
+  const SetFit nominal = score({});
+  d.rmse_before = nominal.rmse_test;
+  auto matched = [&](const SetFit& f) { return f.rmse_test <= kMatched * d.noise; };
+  SetFit current = nominal;
+  std::vector<EffectKind> chosen;
+  bool ambiguous = false;
+  char line[256];
+  std::snprintf(line, sizeof line, "nominal: held-out RMSE %.4g N (noise %.3g N)", nominal.rmse_test, d.noise);
+  d.steps.push_back(line);
+  if (!matched(nominal)) {
+    for (int step = 0; step < kMaxEffects; ++step) {
+      std::vector<std::pair<SetFit, EffectKind>> tried;
+      for (EffectKind k : library) {
+        if (std::find(chosen.begin(), chosen.end(), k) != chosen.end()) continue;
+        std::vector<EffectKind> set = chosen;
+        set.push_back(k);
+        SetFit f = score(set);
+        if (f.valid) tried.emplace_back(std::move(f), k);
+      }
+      if (tried.empty()) break;
+      std::sort(tried.begin(), tried.end(), [](const auto& a, const auto& b) { return a.first.rmse_test < b.first.rmse_test; });
+      const SetFit& best = tried.front().first;
+      const double gain = current.rmse_test - best.rmse_test;
+      if (best.rmse_test > current.rmse_test * (1 - kRealMargin) || best.aicc > current.aicc - kAiccMargin) {
+        std::snprintf(line, sizeof line, "no further effect: the best, %s, would give %.4g N", manifest_of(tried.front().second).name,
+                      best.rmse_test);
+        d.steps.push_back(line);
+        break;
+      }
+      std::vector<EffectKind> alike = {tried.front().second};
+      for (size_t j = 1; j < tried.size(); ++j) {
+        if (tried[j].first.rmse_test - best.rmse_test < kAlike * gain) alike.push_back(tried[j].second);
+      }
+      chosen.push_back(tried.front().second);
+      std::snprintf(line, sizeof line, "+ %s: held-out RMSE %.4g N", manifest_of(tried.front().second).name, best.rmse_test);
+      d.steps.push_back(line);
+      if (alike.size() > 1) {
+        ambiguous = true;
+        for (EffectKind k : alike) {
+          std::vector<EffectKind> set(chosen.begin(), chosen.end() - 1);
+          set.push_back(k);
+          d.ambiguous.push_back(set);
+        }
+        d.steps.push_back("  as good: " + effects_text(alike));
+      }
+      current = best;
+      if (matched(current)) break;
+    }
+  }
+  d.effects = current.effects;
+  d.rmse_after = current.rmse_test;
+  d.shrink = d.rmse_before > 0 ? 1 - d.rmse_after / d.rmse_before : 0.0;
+
+  // Residuals of every trace, before and after.
+  std::vector<std::vector<double>> before, after;
+  for (size_t i = 0; i < replays.size(); ++i) {
+    before.push_back(fitter.residual(nominal, i));
+    after.push_back(fitter.residual(current, i));
+  }
+  d.residual = whiteness(replays, after, all);
+  what_it_follows(replays, after, &d.residual.follows, &d.residual.correlation);
+
+  if (matched(nominal)) {
+    d.verdict = Verdict::none;
+  } else if (chosen.empty() || !(matched(current) || d.residual.white)) {
+    d.verdict = Verdict::unexplained;
+  } else {
+    d.verdict = ambiguous ? Verdict::ambiguous : Verdict::explained;
+  }
+
+  // Where: each phase's share of the squared residual.
+  double total_before = 0, total_after = 0;
+  std::array<PhaseShare, kPhases> shares{};
+  for (int p = 0; p < kPhases; ++p) shares[static_cast<size_t>(p)].phase = static_cast<Phase>(p);
+  for (size_t i = 0; i < replays.size(); ++i) {
+    for (size_t s = 0; s < replays[i].t.size(); ++s) {
+      PhaseShare& ps = shares[static_cast<size_t>(replays[i].phase[s])];
+      ++ps.samples;
+      ps.before += before[i][s] * before[i][s];
+      ps.after += after[i][s] * after[i][s];
+      total_before += before[i][s] * before[i][s];
+      total_after += after[i][s] * after[i][s];
+    }
+  }
+  for (PhaseShare& ps : shares) {
+    if (ps.samples == 0) continue;
+    ps.before = total_before > 0 ? ps.before / total_before : 0;
+    ps.after = total_after > 0 ? ps.after / total_after : 0;
+    d.phases.push_back(ps);
+  }
+  std::sort(d.phases.begin(), d.phases.end(), [](const PhaseShare& a, const PhaseShare& b) { return a.before > b.before; });
+  std::string follows;
+  double corr = 0;
+  what_it_follows(replays, before, &follows, &corr);
+  if (!d.phases.empty()) {
+    std::snprintf(line, sizeof line, "%.0f %% of the gap lies in %s; it follows %s most (correlation %.2f)",
+                  100 * d.phases.front().before, phase_name(d.phases.front().phase), follows.c_str(), corr);
+    d.where = line;
+  }
+  return d;
+}
+
+}  // namespace afford

@@ -1,0 +1,57 @@
+// The sim-to-real gap diagnosis of one measurement: where the nominal model
+// misses (phases), which effect of the library explains it (forward
+// selection on held-out error and AICc), how far the gap shrinks on data
+// the fit never saw, and whether what is left has structure.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fit.h"
+#include "measurement.h"
+#include "replay.h"
+
+namespace afford {
+
+enum class Verdict { none, explained, ambiguous, unexplained };
+const char* verdict_name(Verdict v);
+
+struct PhaseShare {
+  Phase phase = Phase::at_rest;
+  size_t samples = 0;
+  double before = 0, after = 0;  // share of the squared residual, 0..1
+};
+
+// The whiteness of the held-out residual (Ljung-Box over 20 lags) and what
+// it moves with.
+struct ResidualTest {
+  double q = 0;          // the Ljung-Box statistic
+  double threshold = 0;  // its 99 % point for white noise
+  bool white = false;
+  std::string follows;   // the signal it correlates with most ("the direction of motion", ...)
+  double correlation = 0;
+};
+
+struct Diagnosis {
+  std::string measurement;
+  Verdict verdict = Verdict::none;
+  std::vector<EffectFit> effects;                  // the effects adopted
+  std::vector<std::vector<EffectKind>> ambiguous;  // sets that fit as well, when ambiguous
+  double noise = 0;                                // N, the measurement's own noise, estimated
+  double rmse_before = 0, rmse_after = 0;          // N, on the held-out traces
+  double shrink = 0;                               // 1 - after / before, held out
+  std::vector<PhaseShare> phases;
+  std::string where;                               // one sentence
+  ResidualTest residual;
+  std::vector<std::string> judged_on;              // traces (a single trace: its halves), each judged
+  size_t folds = 0;                                // by a fit on the traces outside its fold
+  std::vector<std::string> steps;                  // the selection, step by step
+};
+
+struct DiagnoseOptions {
+  std::vector<EffectKind> library;  // the candidates; empty: every one that applies
+};
+
+Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options = {});
+
+}  // namespace afford

@@ -1,0 +1,80 @@
+// Fitting candidate effects to replayed traces (PySINDy's split: a library
+// of candidate terms, a fit, a score on data the fit did not see). The
+// terms linear in their parameter (friction, damping, preload, progressive
+// spring, inertia, gravity) are fitted by linear least squares (Eigen); the
+// actee's exponent and the sensor's delay by a 1-D search around that.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "effects.h"
+#include "replay.h"
+
+namespace afford {
+
+struct EffectFit {
+  EffectKind kind = EffectKind::pivot_friction;
+  std::array<double, 2> value{};  // SI, in the manifest's order (the nominal value included)
+  std::array<double, 2> sigma{};  // one standard error, same units
+};
+
+struct SetFit {
+  std::vector<EffectFit> effects;
+  double rss_train = 0;     // (N)^2, over the fitted samples of the training traces
+  size_t n_train = 0;
+  int parameters = 0;
+  double aicc = 0;          // of the training fit
+  double rmse_train = 0;    // N
+  double rmse_test = 0;     // N, on the judged traces: the score
+  size_t n_test = 0;
+  bool valid = true;        // false: a fitted value outside its physical range (a negative friction, ...)
+  // What residual() needs to predict again.
+  std::vector<EffectKind> linear;  // the linear effects, in coef's order
+  std::vector<double> coef;        // their fitted changes, then the power law's coefficient if any
+  double delay = 0;                // s
+  double exponent = 0;             // 0: the actee's own law
+};
+
+class Fitter {
+ public:
+  // `train` and `test` index the replays; the model is the nominal one.
+  Fitter(const Model& model, const std::vector<Replay>& replays, std::vector<size_t> train, std::vector<size_t> test);
+
+  // The least-squares fit of a set of effects on the training traces, scored
+  // on the test traces. The empty set is the nominal model.
+  SetFit fit(const std::vector<EffectKind>& set) const;
+
+  // The residual (measured - predicted, N) of every sample of replay i
+  // under a fit; samples outside the fit (at a limit, after a break) are 0.
+  std::vector<double> residual(const SetFit& fit, size_t i) const;
+
+  // The candidates that apply to this rig.
+  std::vector<EffectKind> candidates() const;
+
+ private:
+  struct Nonlinear {
+    double delay = 0;      // s
+    double exponent = 0;   // 0: the model's own actee law
+  };
+  // Prediction columns of replay i: the nominal, and one per linear effect
+  // (and the actee's power law when exponent > 0), delayed by `delay`.
+  void columns(size_t i, const std::vector<EffectKind>& linear, const Nonlinear& nl, std::vector<double>* base,
+               std::vector<std::vector<double>>* cols) const;
+  // Linear least squares on a set of replays for fixed nonlinear parameters.
+  double solve(const std::vector<size_t>& on, const std::vector<EffectKind>& linear, const Nonlinear& nl,
+               std::vector<double>* coef, std::vector<double>* sigma, size_t* n) const;
+  double rss(const std::vector<size_t>& on, const std::vector<EffectKind>& linear, const Nonlinear& nl,
+             const std::vector<double>& coef, size_t* n) const;
+
+  const Model& model_;
+  const std::vector<Replay>& replays_;
+  std::vector<size_t> train_, test_;
+  std::vector<std::array<std::vector<double>, kEffectKinds>> phi_;  // per replay: linear regressors
+  ActeeGeometry actee_;
+};
+
+// AICc of a least-squares fit: n ln(rss/n) + 2k + 2k(k+1)/(n-k-1).
+double aicc(double rss, size_t n, int k);
+
+}  // namespace afford

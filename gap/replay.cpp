@@ -1,0 +1,208 @@
+#include "replay.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "state.h"
+#include "terms.h"
+
+namespace afford {
+namespace {
+
+constexpr double kRateWindow = 0.002;    // s: rates by central differences over +- this
+constexpr double kReversalWindow = 0.02; // s: samples this near a change of direction are a reversal
+constexpr double kLimitBand = 1e-3;      // rad: this near an angle limit counts as at it
+constexpr double kSignWidth = 1e-3;      // rad/s: friction's sign turns over this speed
+
+// Central differences of y over +- kRateWindow (one-sided at the ends).
+std::vector<double> rate_of(const std::vector<double>& t, const std::vector<double>& y) {
+  const size_t n = t.size();
+  const double dt = (t.back() - t.front()) / static_cast<double>(n - 1);
+  const size_t k = std::max<size_t>(1, static_cast<size_t>(std::lround(kRateWindow / dt)));
+  std::vector<double> r(n);
+  for (size_t i = 0; i < n; ++i) {
+    const size_t lo = i >= k ? i - k : 0, hi = std::min(n - 1, i + k);
+    r[i] = (y[hi] - y[lo]) / (t[hi] - t[lo]);
+  }
+  return r;
+}
+
+// The value of y (sampled at t) at time `at`, linear between samples and
+// held before the first.
+double at_time(const std::vector<double>& t, const std::vector<double>& y, double at) {
+  if (at <= t.front()) return y.front();
+  if (at >= t.back()) return y.back();
+  const size_t j = static_cast<size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
+  const double w = (at - t[j - 1]) / (t[j] - t[j - 1]);
+  return (1 - w) * y[j - 1] + w * y[j];
+}
+
+// Phases from direction, contact and the limits; `limit` and `broken` say
+// which samples are at a limit and after the break.
+void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vector<bool>& broken) {
+  // A lever closes as its angle falls; plates load as their displacement grows.
+  const double closing = r.rig == Rig::lever ? -1.0 : 1.0;
+  const size_t n = r.t.size();
+  double peak = 0;
+  for (double w : r.rate) peak = std::max(peak, std::abs(w));
+  // Below this speed the arm is at rest: there Coulomb friction takes any
+  // value up to its limit, which the motion alone cannot tell.
+  const double still = std::max(1e-9, 0.01 * peak);
+  r.phase.assign(n, Phase::at_rest);
+  r.fitted.assign(n, true);
+  int last_sign = 0;
+  std::vector<size_t> turns;
+  for (size_t i = 0; i < n; ++i) {
+    const double rate = closing * r.rate[i];
+    const int sign = rate > still ? -1 : (rate < -still ? 1 : 0);  // -1: closing or loading
+    if (sign != 0 && last_sign != 0 && sign != last_sign) turns.push_back(i);
+    if (sign != 0) last_sign = sign;
+    const bool contact = r.deflection[i] > 0;
+    if (sign < 0) r.phase[i] = contact ? Phase::loading : Phase::free_closing;
+    if (sign > 0) r.phase[i] = contact ? Phase::unloading : Phase::free_opening;
+  }
+  for (size_t turn : turns) {
+    const auto from = std::lower_bound(r.t.begin(), r.t.end(), r.t[turn] - kReversalWindow);
+    const auto to = std::upper_bound(r.t.begin(), r.t.end(), r.t[turn] + kReversalWindow);
+    for (auto it = from; it != to; ++it) r.phase[static_cast<size_t>(it - r.t.begin())] = Phase::reversal;
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (at_limit[i]) r.phase[i] = Phase::at_limit;
+    if (broken[i]) r.phase[i] = Phase::after_break;
+    // A limit's reaction, a broken actee and friction at rest are outside
+    // what the model predicts from the motion.
+    r.fitted[i] = !at_limit[i] && !broken[i] && std::abs(r.rate[i]) > still;
+  }
+}
+
+}  // namespace
+
+double smooth_sign(double rate) { return std::tanh(rate / kSignWidth); }
+
+const char* phase_name(Phase p) {
+  static const char* const kNames[] = {"free closing", "free opening", "reversals", "loading in contact",
+                                       "unloading in contact", "at rest", "at a limit", "after the break"};
+  return kNames[static_cast<int>(p)];
+}
+
+std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
+  const auto state = make_state(model);
+  const bool actee = model.has_actee && state->between_jaws;
+  const double a = actee ? std::abs(state->load_distance) : 0.0;
+  const double b = std::abs(m.effort_at);
+  double g_cos = 0, g_sin = 0;
+  gravity_coefficients(model, model.object_start.linear(), &g_cos, &g_sin);
+  std::vector<Replay> out;
+  for (const Trace& trace : m.traces) {
+    Replay r;
+    r.file = trace.file;
+    r.t = trace[Signal::t];
+    r.x = trace[Signal::angle];
+    r.rate = rate_of(r.t, r.x);
+    r.accel = rate_of(r.t, r.rate);
+    r.to_newtons = 1 / b;
+    const size_t n = r.t.size();
+    r.measured.resize(n);
+    r.nominal.resize(n);
+    r.deflection.resize(n);
+    std::vector<bool> at_limit(n), broken(n);
+    const bool measured_actee = trace.has(Signal::actee_force) && actee;
+    bool model_broke = false;
+    for (size_t i = 0; i < n; ++i) {
+      const double theta = r.x[i], omega = r.rate[i], alpha = r.accel[i];
+      r.measured[i] = trace[Signal::effort_force][i] * b;
+      const SpringTorques spring = spring_torques(model, theta);
+      const double deflection = actee ? std::max(0.0, a * (state->contact_angle - theta)) : 0.0;
+      double slope = 0;
+      const double actee_force = actee_force_law(model, deflection, state->actee_thickness, &slope);
+      // Coulomb friction against the motion; a smooth sign near rest, where
+      // the motion alone cannot say which way friction holds.
+      const double friction = -model.friction_torque * smooth_sign(omega);
+      r.nominal[i] = spring.linear + spring.preload + spring.progressive + actee_force * a + friction -
+                     model.damping * omega - model.arm_inertia * alpha + g_cos * std::cos(theta) +
+                     g_sin * std::sin(theta);
+      r.deflection[i] = deflection;
+      at_limit[i] = theta <= model.theta_min + kLimitBand || theta >= model.theta_max - kLimitBand;
+      if (trace.has(Signal::broken)) {
+        broken[i] = trace[Signal::broken][i] > 0.5;
+      } else {
+        model_broke = model_broke || (model.actee_breaks && actee_force > model.actee_limit);
+        broken[i] = model_broke;
+      }
+      if (measured_actee) {
+        r.actee_measured.push_back(trace[Signal::actee_force][i]);
+        r.actee_nominal.push_back(broken[i] ? 0.0 : actee_force);
+      }
+    }
+    if (model.sensor_latency > 0) {  // the sensor reports the effort of `delay` ago
+      const std::vector<double> prompt = r.nominal;
+      for (size_t i = 0; i < n; ++i) r.nominal[i] = at_time(r.t, prompt, r.t[i] - model.sensor_latency);
+    }
+    assign_phases(r, at_limit, broken);
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+std::vector<Replay> replay_plates(const Model& model, const Measurement& m) {
+  const double thickness = actee_geometry(model, Rig::plates).thickness;
+  std::vector<Replay> out;
+  for (const Trace& trace : m.traces) {
+    Replay r;
+    r.file = trace.file;
+    r.rig = Rig::plates;
+    r.t = trace[Signal::t];
+    r.x = trace[Signal::displacement];
+    r.rate = rate_of(r.t, r.x);
+    r.accel = rate_of(r.t, r.rate);
+    const size_t n = r.t.size();
+    r.measured = trace[Signal::force];
+    r.nominal.resize(n);
+    r.deflection.resize(n);
+    std::vector<bool> at_limit(n, false), broken(n, false);
+    // The shell gives way at its peak before the first large drop.
+    size_t rupture = n;
+    double peak = 0;
+    for (size_t i = 0; i < n; ++i) {
+      if (r.measured[i] > peak) peak = r.measured[i];
+      if (peak > 0.1 * model.actee_limit && r.measured[i] < 0.9 * peak) {
+        rupture = i;
+        break;
+      }
+    }
+    for (size_t i = 0; i < n; ++i) {
+      double slope = 0;
+      r.deflection[i] = std::max(0.0, r.x[i]);
+      r.nominal[i] = actee_force_law(model, r.deflection[i], thickness, &slope);
+      broken[i] = i >= rupture;
+    }
+    assign_phases(r, at_limit, broken);
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+ActeeGeometry actee_geometry(const Model& model, Rig rig) {
+  ActeeGeometry g;
+  if (rig == Rig::plates) {
+    const Eigen::Vector3d d = model.actee_direction;
+    g.thickness = model.actee().support(d) + model.actee().support(-d);
+  } else {
+    const auto state = make_state(model);
+    g.arm = std::abs(state->load_distance);
+    g.thickness = state->actee_thickness;
+  }
+  return g;
+}
+
+std::vector<double> actee_term(const Model& model, const Replay& r, const ActeeGeometry& g, double exponent,
+                               double reference) {
+  std::vector<double> out(r.t.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    double slope = 0;
+    out[i] = actee_law(model.actee_stiffness, exponent, reference, r.deflection[i], g.thickness, &slope) * g.arm;
+  }
+  return out;
+}
+
+}  // namespace afford

@@ -1,0 +1,63 @@
+// Kinematic replay: the measured motion drives the nominal model, which
+// says what effort (lever) or force (plates) it needs at every sample; the
+// difference from the measured one is the gap. Each candidate effect adds a
+// torque (or force) along the same samples: its regressor.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "measurement.h"
+
+namespace afford {
+
+// Where a sample lies, from the model's own state along the trace.
+enum class Phase { free_closing, free_opening, reversal, loading, unloading, at_rest, at_limit, after_break };
+inline constexpr int kPhases = 8;
+const char* phase_name(Phase p);
+
+// One trace replayed. For a lever the main signal is the torque about the
+// fulcrum, N*m (the effort times its lever arm); for plates the force, N.
+struct Replay {
+  std::string file;
+  std::vector<double> t;         // s
+  std::vector<double> x;         // rad (lever angle) or m (plate displacement)
+  std::vector<double> rate;      // rad/s or m/s
+  std::vector<double> accel;     // rad/s^2 or m/s^2
+  std::vector<double> measured;  // N*m or N
+  std::vector<double> nominal;   // the nominal model's prediction, same unit
+  std::vector<double> deflection;  // m, the actee's, from the model (0 without contact)
+  std::vector<double> actee_measured, actee_nominal;  // N, lever with an actee_force column; else empty
+  std::vector<Phase> phase;
+  std::vector<bool> fitted;      // used in fits and scores: not at a limit, not after a break
+  Rig rig = Rig::lever;
+  double to_newtons = 1;         // 1 / lever arm (lever) or 1: main signal to N at the effort
+};
+
+// Replays every trace of a lever measurement through `model` (compiled from
+// it, with or without candidate effects switched on).
+std::vector<Replay> replay_lever(const Model& model, const Measurement& m);
+
+// Replays every trace of a plates measurement: the actee's law at the
+// measured displacement (the actee compiled with no tool).
+std::vector<Replay> replay_plates(const Model& actee_model, const Measurement& m);
+
+// The direction of motion, smoothed over a small speed so that a fit's
+// friction term is continuous (rad/s in, -1..1 out).
+double smooth_sign(double rate);
+
+// Where the actee sits: its lever arm (m; 1 between plates, where the main
+// signal is its force) and its thickness across the jaws or plates (m).
+struct ActeeGeometry {
+  double arm = 1;
+  double thickness = 0;
+};
+ActeeGeometry actee_geometry(const Model& model, Rig rig);
+
+// The actee's torque (lever) or force (plates) at each sample, with the
+// power law of exponent n and reference deflection r (for the
+// actee_compliance candidate).
+std::vector<double> actee_term(const Model& model, const Replay& r, const ActeeGeometry& g, double exponent,
+                               double reference);
+
+}  // namespace afford

@@ -1,0 +1,111 @@
+#include "report.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "trace.h"  // json_string
+#include "units.h"
+
+namespace afford {
+namespace {
+
+std::string number(double x) {
+  if (!std::isfinite(x)) return "null";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+// The SI unit of a parameter: values are reported in SI.
+std::string unit_of(const EffectParam& p) {
+  if (p.dimension == dim::none) return "";
+  if (p.dimension == dim::length) return "m";
+  const std::string q = format_quantity(1, p.dimension);  // "1 N*m": the others show in SI
+  return q.substr(q.find(' ') + 1);
+}
+
+}  // namespace
+
+std::string report_text(const Diagnosis& d) {
+  std::string out = "measurement " + d.measurement + ": verdict " + verdict_name(d.verdict) + "\n";
+  char line[512];
+  std::snprintf(line, sizeof line, "held-out RMSE %.4g N before, %.4g N after (shrink %.0f %%); noise about %.3g N\n",
+                d.rmse_before, d.rmse_after, 100 * d.shrink, d.noise);
+  out += line;
+  std::snprintf(line, sizeof line, "judged by cross-validation over %zu folds of %zu traces\n", d.folds, d.judged_on.size());
+  out += line;
+  if (!d.where.empty()) out += "where: " + d.where + "\n";
+  for (const PhaseShare& p : d.phases) {
+    std::snprintf(line, sizeof line, "  %-22s %6zu samples  %5.1f %% of the gap before, %5.1f %% after\n", phase_name(p.phase),
+                  p.samples, 100 * p.before, 100 * p.after);
+    out += line;
+  }
+  if (!d.effects.empty()) out += d.verdict == Verdict::unexplained ? "effects fitted (not enough):\n" : "effects:\n";
+  for (const EffectFit& e : d.effects) {
+    const EffectManifest& m = manifest_of(e.kind);
+    out += "  " + std::string(m.name) + ":";
+    for (size_t i = 0; i < m.params.size(); ++i) {
+      std::snprintf(line, sizeof line, " %s %.4g +- %.2g %s", m.params[i].key, e.value[i], e.sigma[i], unit_of(m.params[i]).c_str());
+      out += line;
+    }
+    out += "\n";
+  }
+  for (const auto& set : d.ambiguous) {
+    std::string s;
+    for (EffectKind k : set) s += (s.empty() ? "" : " + ") + std::string(manifest_of(k).name);
+    out += "  as good: " + s + "\n";
+  }
+  std::snprintf(line, sizeof line, "residual: %s (Ljung-Box Q = %.1f, white below %.1f); it follows %s (correlation %.2f)\n",
+                d.residual.white ? "white" : "structured", d.residual.q, d.residual.threshold, d.residual.follows.c_str(),
+                d.residual.correlation);
+  out += line;
+  if (d.verdict == Verdict::unexplained) {
+    out += "nothing in the library explains what is left";
+    out += d.effects.empty() ? ".\n" : " after the effects above.\n";
+  }
+  out += "selection:\n";
+  for (const std::string& s : d.steps) out += "  " + s + "\n";
+  return out;
+}
+
+std::string report_json(const Diagnosis& d) {
+  std::string j = "{\"measurement\":" + json_string(d.measurement) + ",\"verdict\":\"" + verdict_name(d.verdict) + "\"";
+  j += ",\"effects\":[";
+  for (size_t e = 0; e < d.effects.size(); ++e) {
+    const EffectManifest& m = manifest_of(d.effects[e].kind);
+    j += std::string(e ? "," : "") + "{\"name\":\"" + m.name + "\",\"parameters\":{";
+    for (size_t i = 0; i < m.params.size(); ++i) {
+      j += std::string(i ? "," : "") + "\"" + m.params[i].key + "\":{\"value\":" + number(d.effects[e].value[i]) +
+           ",\"unit\":\"" + (m.params[i].dimension == dim::none ? "" : std::string(unit_of(m.params[i]))) +
+           "\",\"uncertainty\":" + number(d.effects[e].sigma[i]) + "}";
+    }
+    j += "}}";
+  }
+  j += "],\"ambiguous\":[";
+  for (size_t s = 0; s < d.ambiguous.size(); ++s) {
+    j += s ? ",[" : "[";
+    for (size_t k = 0; k < d.ambiguous[s].size(); ++k) {
+      j += std::string(k ? "," : "") + "\"" + manifest_of(d.ambiguous[s][k]).name + "\"";
+    }
+    j += "]";
+  }
+  j += "],\"shrink\":" + number(d.shrink) + ",\"rmse_before\":" + number(d.rmse_before) +
+       ",\"rmse_after\":" + number(d.rmse_after) + ",\"noise\":" + number(d.noise) + ",\"unit\":\"N\"";
+  j += ",\"phases\":[";
+  for (size_t p = 0; p < d.phases.size(); ++p) {
+    j += std::string(p ? "," : "") + "{\"name\":" + json_string(phase_name(d.phases[p].phase)) +
+         ",\"samples\":" + std::to_string(d.phases[p].samples) + ",\"share_before\":" + number(d.phases[p].before) +
+         ",\"share_after\":" + number(d.phases[p].after) + "}";
+  }
+  j += "],\"where\":" + json_string(d.where);
+  j += ",\"residual\":{\"white\":" + std::string(d.residual.white ? "true" : "false") + ",\"ljung_box_q\":" +
+       number(d.residual.q) + ",\"threshold\":" + number(d.residual.threshold) + ",\"follows\":" +
+       json_string(d.residual.follows) + ",\"correlation\":" + number(d.residual.correlation) + "}";
+  j += ",\"events\":[]";
+  j += ",\"folds\":" + std::to_string(d.folds) + ",\"traces\":[";
+  for (size_t i = 0; i < d.judged_on.size(); ++i) j += std::string(i ? "," : "") + json_string(d.judged_on[i]);
+  j += "]}";
+  return j;
+}
+
+}  // namespace afford
