@@ -19,6 +19,7 @@ const std::vector<Command>& commands();
 
 int run_check(const Args& args);
 int run_describe(const Args& args);
+int run_gap(const Args& args);
 int run_guide(const Args& args);
 int run_live(const Args& args);
 int run_run(const Args& args);

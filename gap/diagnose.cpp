@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace afford {
 namespace {
@@ -283,6 +284,32 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     d.verdict = Verdict::unexplained;
   } else {
     d.verdict = ambiguous ? Verdict::ambiguous : Verdict::explained;
+  }
+
+  // Unexplained over several traces: would each trace, fitted alone, be?
+  if (d.verdict == Verdict::unexplained && m.traces.size() > 1 && !library.empty()) {
+    PerTrace& pt = d.per_trace;
+    double best = std::numeric_limits<double>::max();
+    for (EffectKind k : library) {
+      const SetFit f = fitter.fit({k});
+      if (f.valid && f.rmse_train < best) {
+        best = f.rmse_train;
+        pt.effect = k;
+      }
+    }
+    double sq_nominal = 0, sq_alone = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < replays.size(); ++i) {
+      const Fitter own(model, replays, {i}, {i});
+      const SetFit a = own.fit({}), b = own.fit({pt.effect});
+      sq_nominal += a.rmse_test * a.rmse_test * static_cast<double>(a.n_test);
+      sq_alone += b.rmse_test * b.rmse_test * static_cast<double>(b.n_test);
+      n += b.n_test;
+      pt.first_parameter.push_back(b.effects.empty() ? 0.0 : b.effects.front().value[0]);
+    }
+    pt.computed = n > 0;
+    pt.rmse_nominal = n > 0 ? std::sqrt(sq_nominal / static_cast<double>(n)) : 0.0;
+    pt.rmse_alone = n > 0 ? std::sqrt(sq_alone / static_cast<double>(n)) : 0.0;
   }
 
   // Where: each phase's share of the squared residual.

@@ -32,6 +32,16 @@ struct ResidualTest {
   double correlation = 0;
 };
 
+// When one model does not fit the traces together: the best effect fitted
+// to each trace alone (in sample), to tell specimens that differ from one
+// another from a model that misses.
+struct PerTrace {
+  bool computed = false;
+  EffectKind effect = EffectKind::pivot_friction;
+  double rmse_nominal = 0, rmse_alone = 0;  // N, every trace, each under its own fit
+  std::vector<double> first_parameter;      // SI, per trace
+};
+
 struct Diagnosis {
   std::string measurement;
   Verdict verdict = Verdict::none;
@@ -43,6 +53,7 @@ struct Diagnosis {
   std::vector<PhaseShare> phases;
   std::string where;                               // one sentence
   ResidualTest residual;
+  PerTrace per_trace;                              // with an unexplained verdict over several traces
   std::vector<std::string> judged_on;              // traces (a single trace: its halves), each judged
   size_t folds = 0;                                // by a fit on the traces outside its fold
   std::vector<std::string> steps;                  // the selection, step by step

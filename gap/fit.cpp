@@ -96,6 +96,7 @@ Fitter::Fitter(const Model& model, const std::vector<Replay>& replays, std::vect
   const double ds = std::abs(model.spring_position);
   for (const Replay& r : replays_) {
     std::array<std::vector<double>, kEffectKinds> phi;
+    std::vector<double> weight;
     if (r.rig == Rig::lever) {
       const size_t n = r.t.size();
       auto col = [&](EffectKind k) -> std::vector<double>& {
@@ -113,8 +114,19 @@ Fitter::Fitter(const Model& model, const std::vector<Replay>& replays, std::vect
         col(EffectKind::arm_inertia)[i] = -alpha;
         col(EffectKind::gravity)[i] = -std::cos(theta);
       }
+      // Switching gravity on brings the arm's computed weight too.
+      if (!model.gravity) {
+        Model on = model;
+        on.gravity = true;
+        on.gravity_extra = 0;
+        double c = 0, sn = 0;
+        gravity_coefficients(on, model.object_start.linear(), &c, &sn);
+        weight.resize(n);
+        for (size_t i = 0; i < n; ++i) weight[i] = c * std::cos(r.x[i]) + sn * std::sin(r.x[i]);
+      }
     }
     phi_.push_back(std::move(phi));
+    weight_.push_back(std::move(weight));
   }
 }
 
@@ -138,7 +150,12 @@ void Fitter::columns(size_t i, const std::vector<EffectKind>& linear, const Nonl
   const Replay& r = replays_[i];
   *base = r.nominal;
   cols->clear();
-  for (EffectKind k : linear) cols->push_back(phi_[i][static_cast<size_t>(k)]);
+  for (EffectKind k : linear) {
+    cols->push_back(phi_[i][static_cast<size_t>(k)]);
+    if (k == EffectKind::gravity && !weight_[i].empty()) {
+      for (size_t j = 0; j < base->size(); ++j) (*base)[j] += weight_[i][j];
+    }
+  }
   if (nl.exponent > 0) {
     const std::vector<double> own = actee_term(model_, r, actee_, model_.actee_exponent, model_.actee_reference);
     for (size_t j = 0; j < base->size(); ++j) (*base)[j] -= own[j];

@@ -71,6 +71,7 @@ class Fitter {
   const std::vector<Replay>& replays_;
   std::vector<size_t> train_, test_;
   std::vector<std::array<std::vector<double>, kEffectKinds>> phi_;  // per replay: linear regressors
+  std::vector<std::vector<double>> weight_;  // per replay: the arm's weight torque, if gravity is off
   ActeeGeometry actee_;
 };
 

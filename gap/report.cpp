@@ -1,5 +1,6 @@
 #include "report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -63,6 +64,16 @@ std::string report_text(const Diagnosis& d) {
     out += "nothing in the library explains what is left";
     out += d.effects.empty() ? ".\n" : " after the effects above.\n";
   }
+  if (d.per_trace.computed) {
+    const PerTrace& p = d.per_trace;
+    const auto [lo, hi] = std::minmax_element(p.first_parameter.begin(), p.first_parameter.end());
+    const EffectParam& param = manifest_of(p.effect).params[0];
+    std::snprintf(line, sizeof line,
+                  "each trace alone (in sample): %s would take the gap from %.4g N to %.4g N, with %s from %.4g to %.4g; "
+                  "the traces differ from one another more than one model allows\n",
+                  manifest_of(p.effect).name, p.rmse_nominal, p.rmse_alone, param.key, *lo, *hi);
+    out += line;
+  }
   out += "selection:\n";
   for (const std::string& s : d.steps) out += "  " + s + "\n";
   return out;
@@ -101,6 +112,14 @@ std::string report_json(const Diagnosis& d) {
   j += ",\"residual\":{\"white\":" + std::string(d.residual.white ? "true" : "false") + ",\"ljung_box_q\":" +
        number(d.residual.q) + ",\"threshold\":" + number(d.residual.threshold) + ",\"follows\":" +
        json_string(d.residual.follows) + ",\"correlation\":" + number(d.residual.correlation) + "}";
+  if (d.per_trace.computed) {
+    j += ",\"per_trace\":{\"effect\":\"" + std::string(manifest_of(d.per_trace.effect).name) + "\",\"rmse_nominal\":" +
+         number(d.per_trace.rmse_nominal) + ",\"rmse_alone\":" + number(d.per_trace.rmse_alone) + ",\"parameter\":[";
+    for (size_t i = 0; i < d.per_trace.first_parameter.size(); ++i) {
+      j += std::string(i ? "," : "") + number(d.per_trace.first_parameter[i]);
+    }
+    j += "]}";
+  }
   j += ",\"events\":[]";
   j += ",\"folds\":" + std::to_string(d.folds) + ",\"traces\":[";
   for (size_t i = 0; i < d.judged_on.size(); ++i) j += std::string(i ? "," : "") + json_string(d.judged_on[i]);

@@ -13,6 +13,8 @@
 #include <unistd.h>
 
 #include "diagnose.h"
+#include "load.h"
+#include "patch.h"
 #include "report.h"
 #include "test_util.h"
 
@@ -139,6 +141,27 @@ TEST(Gap, JsonHasTheReportedFields) {
                           "\"phases\":[", "\"share_before\":", "\"residual\":{\"white\":", "\"events\":"}) {
     EXPECT_THAT(json, HasSubstr(key));
   }
+}
+
+TEST(Gap, APatchAdoptsTheEffectAndLeavesNoGap) {
+  const fs::path file = lever_measurement("patch", {0.3, 0, 0});
+  const Measurement m = load_measurement(file.string());
+  const Diagnosis d = diagnose(m);
+  ASSERT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  const fs::path dir = file.parent_path() / "patch";
+  const std::vector<std::string> written = write_patch(m, d, dir.string());
+  ASSERT_EQ(written.size(), 2u);  // object.yaml and measurement.yaml
+  const ObjectSpec patched = load_object((dir / "object.yaml").string());
+  bool friction = false;
+  for (const EffectSpec& e : patched.effects) {
+    if (e.kind == EffectKind::pivot_friction) {
+      friction = true;
+      EXPECT_NEAR(e.param[0], d.effects[0].value[0], 1e-5);
+    }
+  }
+  EXPECT_TRUE(friction);
+  const Diagnosis again = diagnose(load_measurement((dir / "measurement.yaml").string()));
+  EXPECT_EQ(again.verdict, Verdict::none) << report_text(again);
 }
 
 // ------------------------------------------------------------ bad files

@@ -1,0 +1,115 @@
+#include "patch.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "units.h"
+
+namespace afford {
+namespace {
+
+namespace fs = std::filesystem;
+
+// "0.3112 N*m": the value in SI with its unit, as the files are written.
+std::string quantity(double si, const EffectParam& p) {
+  char buf[64];
+  if (p.dimension == dim::none) {
+    std::snprintf(buf, sizeof buf, "%.6g", si);
+    return buf;
+  }
+  std::string unit = p.dimension == dim::length ? "m" : format_quantity(1, p.dimension);
+  unit = unit.substr(unit.find(' ') + 1);
+  std::snprintf(buf, sizeof buf, "%.6g %s", si, unit.c_str());
+  return buf;
+}
+
+// The file as YAML with the effects of `home` among `fits` switched on.
+YAML::Node patched(const std::string& file, const std::vector<EffectFit>& fits, EffectHome home) {
+  YAML::Node root = YAML::LoadFile(file);
+  for (const EffectFit& e : fits) {
+    const EffectManifest& m = manifest_of(e.kind);
+    if (m.home != home) continue;
+    YAML::Node effect;
+    for (size_t i = 0; i < m.params.size(); ++i) effect[m.params[i].key] = quantity(e.value[i], m.params[i]);
+    // The spring section's preload is this effect's parameter: given once.
+    if (e.kind == EffectKind::spring_preload && root["spring"] && root["spring"]["preload"]) {
+      root["spring"]["preload"] = quantity(e.value[0], m.params[0]);
+      continue;
+    }
+    if (e.kind == EffectKind::spring_preload && root["spring"] && root["spring"]["rest_length"]) {
+      root["spring"].remove("rest_length");
+      root["spring"]["preload"] = quantity(e.value[0], m.params[0]);
+      continue;
+    }
+    root["effects"][m.name] = effect;
+  }
+  return root;
+}
+
+std::string write(const fs::path& path, const YAML::Node& root, const std::string& from) {
+  YAML::Emitter out;
+  out << root;
+  std::ofstream file(path);
+  file << "# Written by afford gap from " << from << ": the fitted effects switched on.\n" << out.c_str() << "\n";
+  file.close();
+  if (!file) throw std::runtime_error("cannot write " + path.string());
+  return path.string();
+}
+
+bool any_in(const std::vector<EffectFit>& fits, EffectHome home) {
+  for (const EffectFit& e : fits) {
+    if (manifest_of(e.kind).home == home) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<std::string> write_patch(const Measurement& m, const Diagnosis& d, const std::string& dir) {
+  fs::create_directories(dir);
+  std::vector<std::string> written;
+  YAML::Node measurement = YAML::LoadFile(m.file);
+  const fs::path here = fs::absolute(m.file).parent_path();
+  auto own_file = [&](const std::string& file, const char* what) {
+    if (fs::equivalent(file, m.file)) {
+      fail(SourceLoc{m.file, 1, 1}, std::string("the ") + what + " in a file of its own, to patch",
+           std::string("the ") + what + " written inside the measurement");
+    }
+  };
+  if (m.object) {
+    own_file(m.object->file, "object");
+    if (any_in(d.effects, EffectHome::object)) {
+      written.push_back(write(fs::path(dir) / "object.yaml", patched(m.object->file, d.effects, EffectHome::object), m.object->file));
+      measurement["object"] = "object.yaml";
+    } else {
+      measurement["object"] = fs::absolute(m.object->file).string();
+    }
+  }
+  if (m.actee) {
+    own_file(m.actee->file, "actee");
+    std::string actee_path = fs::absolute(m.actee->file).string();
+    if (any_in(d.effects, EffectHome::actee)) {
+      written.push_back(write(fs::path(dir) / "actee.yaml", patched(m.actee->file, d.effects, EffectHome::actee), m.actee->file));
+      actee_path = "actee.yaml";
+    }
+    measurement["actee"]["file"] = actee_path;
+  }
+  // The traces stay where they are.
+  auto absolute = [&](const YAML::Node& n) { return (here / n.as<std::string>()).lexically_normal().string(); };
+  if (measurement["trace"]) measurement["trace"] = absolute(measurement["trace"]);
+  if (measurement["traces"]) {
+    for (size_t i = 0; i < measurement["traces"].size(); ++i) measurement["traces"][i] = absolute(measurement["traces"][i]);
+  }
+  for (const EffectFit& e : d.effects) {
+    const EffectManifest& mf = manifest_of(e.kind);
+    if (mf.home != EffectHome::measurement) continue;
+    for (size_t i = 0; i < mf.params.size(); ++i) measurement["effects"][mf.name][mf.params[i].key] = quantity(e.value[i], mf.params[i]);
+  }
+  written.push_back(write(fs::path(dir) / "measurement.yaml", measurement, m.file));
+  return written;
+}
+
+}  // namespace afford
