@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "errors.h"
 #include "device_description.h"
+#include "measurement.h"
 #include "validate.h"
 
 namespace afford::cli {
@@ -12,11 +13,17 @@ namespace {
 
 std::string check_device(const Node& root) { return "device " + read_device_description(root).name; }
 
+std::string check_measurement(const Node& root) {
+  const Measurement m = read_measurement(root);
+  return "measurement " + m.name + ", " + std::to_string(m.traces.size()) + " traces";
+}
+
 }  // namespace
 
 int run_check(const Args& args) {
   if (args.empty()) return usage_error("check needs at least one FILE");
   add_file_kind("device", check_device);  // device descriptions live in devices/
+  add_file_kind("measurement", check_measurement);  // and measurements in gap/
   int errors = 0;
   for (const std::string& path : args) {
     try {
