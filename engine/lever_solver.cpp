@@ -41,6 +41,7 @@
 
 #include "lever.h"
 #include "stages.h"
+#include "forced_lever.h"
 #include "terms.h"
 
 namespace afford {
@@ -63,17 +64,20 @@ struct Balance {
   bool actee = false;             // the actee is between the jaws, unbroken
   double a = 0, theta_c = 0, thickness = 0;  // m, rad, m
   double g_cos = 0, g_sin = 0;    // N*m, gravity's coefficients for this frame
+  double dt = m.timestep;         // s
+  double forced = -1;             // N: >= 0, the hand pushes with this force whatever the angle
 
-  double omega(double theta) const { return (theta - theta0) / m.timestep; }
+  double omega(double theta) const { return (theta - theta0) / dt; }
 
   // The hand impedance's push at the emphasis, N, and its slope, N/rad.
   double hand(double theta, double* slope) const {
     *slope = 0;
     if (b == 0) return 0;
+    if (forced >= 0) return forced;
     const double f = m.force_gain * b * (theta - cmd) + m.hand_damping * b * (omega(theta) - omega_cmd);
     if (f <= 0) return 0;  // the thumb has left the arm: it pushes, never pulls
     if (f >= max_force) return max_force;
-    *slope = m.force_gain * b + m.hand_damping * b / m.timestep;
+    *slope = m.force_gain * b + m.hand_damping * b / dt;
     return f;
   }
 
@@ -99,9 +103,8 @@ struct Balance {
       opening_slope += -g_cos * sn + g_sin * c;
     }
     const double w = omega(theta);
-    const double alpha = (w - omega0) / m.timestep;
-    *slope = hand_slope * b - opening_slope + m.damping / m.timestep +
-             m.arm_inertia / (m.timestep * m.timestep);
+    const double alpha = (w - omega0) / dt;
+    *slope = hand_slope * b - opening_slope + m.damping / dt + m.arm_inertia / (dt * dt);
     return hand_torque - opening + m.damping * w + m.arm_inertia * alpha;
   }
 
@@ -161,6 +164,38 @@ void follow_thumb(const Model& m, State& s) {
   s.omega_command = -turn / m.timestep;
 }
 
+// The angle at the end of the step: implicit balance with Coulomb friction
+// (stick where the net torque at rest is within the friction torque, else
+// move with friction against the motion), between the limits. Fills the
+// lower end of the range (an actee cannot be squeezed through: the range
+// ends short of where it would be flat) and the friction torque.
+double settle(const Balance& eq, double* lo_out, double* friction) {
+  const Model& m = eq.m;
+  double lo = m.theta_min;
+  if (eq.actee && eq.a > 0 && eq.thickness > 0) {
+    lo = std::max(lo, eq.theta_c - eq.thickness * (1 - 1e-9) / eq.a);
+  }
+  const double hi = m.theta_max;
+  const double start = std::clamp(eq.theta0, lo, hi);
+  *lo_out = lo;
+  double slope = 0;
+  const double at_rest = eq.value(start, &slope);
+  const double tf = m.friction_torque;
+  double theta = start;
+  if (std::abs(at_rest) <= tf && start == eq.theta0) {
+    *friction = at_rest;  // stiction holds the arm
+  } else if (at_rest > tf) {
+    *friction = tf;  // closing: friction opens
+    theta = start == lo ? lo : eq.solve(lo, start, tf, start, at_rest - tf, slope);
+  } else {
+    *friction = -tf;
+    theta = start == hi ? hi : eq.solve(start, hi, -tf, start, at_rest + tf, slope);
+  }
+  // On a stop at rest the stop's reaction takes it all.
+  if ((theta == lo || theta == hi) && theta == start) *friction = 0;
+  return theta;
+}
+
 // sensor_latency: the effort a sensor reports `delay` after it acted,
 // interpolated between the two frames around it.
 void sense_effort(const Model& m, State& s) {
@@ -182,6 +217,28 @@ void sense_effort(const Model& m, State& s) {
 }
 
 }  // namespace
+
+ForcedStep step_forced_lever(const Model& m, const ForcedLever& lever, double theta0, double omega0,
+                             double effort_n, double dt) {
+  Balance eq{m};
+  eq.theta0 = theta0;
+  eq.omega0 = omega0;
+  eq.b = lever.effort_distance;
+  eq.forced = std::max(0.0, effort_n);
+  eq.actee = lever.actee;
+  eq.a = lever.load_distance;
+  eq.theta_c = lever.contact_angle;
+  eq.thickness = lever.thickness;
+  eq.dt = dt;
+  gravity_coefficients(m, lever.object_rotation, &eq.g_cos, &eq.g_sin);
+  double lo = 0, friction = 0;
+  ForcedStep out;
+  out.theta = settle(eq, &lo, &friction);
+  out.omega = eq.omega(out.theta);
+  double slope = 0;
+  out.actee_force = eq.actee_force(out.theta, &slope);
+  return out;
+}
 
 void solve_lever(const Model& m, State& s) {
   Balance eq{m};
@@ -206,35 +263,13 @@ void solve_lever(const Model& m, State& s) {
     s.omega_command = 0;
   }
 
-  // The actee cannot be squeezed through: the arm's range ends short of
-  // where it would be flat.
-  double lo = m.theta_min;
-  if (eq.actee && eq.a > 0 && eq.thickness > 0) {
-    lo = std::max(lo, eq.theta_c - eq.thickness * (1 - 1e-9) / eq.a);
-  }
+  double lo = 0, friction = 0;
+  const double theta = settle(eq, &lo, &friction);
   const double hi = m.theta_max;
-  const double start = std::clamp(s.theta, lo, hi);
-
-  // Coulomb friction: stick where the net torque at rest is within the
-  // friction torque, else move with friction against the motion.
-  double slope = 0;
-  const double at_rest = eq.value(start, &slope);
-  const double tf = m.friction_torque;
-  double theta = start, friction = 0;
-  if (std::abs(at_rest) <= tf && start == s.theta) {
-    friction = at_rest;  // stiction holds the arm
-  } else if (at_rest > tf) {
-    friction = tf;  // closing: friction opens
-    theta = start == lo ? lo : eq.solve(lo, start, tf, start, at_rest - tf, slope);
-  } else {
-    friction = -tf;
-    theta = start == hi ? hi : eq.solve(start, hi, -tf, start, at_rest + tf, slope);
-  }
 
   // The terms at the solution, each named; the stop takes what is left when
   // the arm rests on a limit (or on an actee squeezed to its last solid).
   const bool resting = theta == lo || theta == hi;
-  if (resting && theta == start) friction = 0;  // on a stop at rest: the stop's reaction takes it all
   double hand_slope = 0, actee_slope = 0;
   const SpringTorques spring = spring_torques(m, theta);
   const double omega = eq.omega(theta);

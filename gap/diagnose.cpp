@@ -174,6 +174,18 @@ const char* verdict_name(Verdict v) {
   return kNames[static_cast<int>(v)];
 }
 
+Model compile_with(const Measurement& m, const std::vector<EffectFit>& effects) {
+  Measurement with = m;
+  for (const EffectFit& e : effects) {
+    EffectSpec spec;
+    spec.kind = e.kind;
+    spec.name = manifest_of(e.kind).name;
+    spec.param = e.value;
+    with.options.effects.push_back(spec);
+  }
+  return m.rig == Rig::lever ? compile_measurement(with) : compile_actee_only(*with.actee, with.options);
+}
+
 Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   Diagnosis d;
   d.measurement = m.name;
@@ -310,6 +322,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     pt.computed = n > 0;
     pt.rmse_nominal = n > 0 ? std::sqrt(sq_nominal / static_cast<double>(n)) : 0.0;
     pt.rmse_alone = n > 0 ? std::sqrt(sq_alone / static_cast<double>(n)) : 0.0;
+  }
+
+  // By force: what the effort makes of the angle and the actee, nominal
+  // and with the effects adopted.
+  if (m.rig == Rig::lever) {
+    d.by_force_before = replay_force(model, m);
+    d.by_force_after = d.effects.empty() ? d.by_force_before : replay_force(compile_with(m, d.effects), m);
   }
 
   // Where: each phase's share of the squared residual.

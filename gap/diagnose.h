@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fit.h"
+#include "force_replay.h"
 #include "measurement.h"
 #include "replay.h"
 
@@ -54,6 +55,7 @@ struct Diagnosis {
   std::string where;                               // one sentence
   ResidualTest residual;
   PerTrace per_trace;                              // with an unexplained verdict over several traces
+  std::vector<ForceGap> by_force_before, by_force_after;  // lever: replayed by force, nominal and fitted
   std::vector<std::string> judged_on;              // traces (a single trace: its halves), each judged
   size_t folds = 0;                                // by a fit on the traces outside its fold
   std::vector<std::string> steps;                  // the selection, step by step
@@ -64,5 +66,8 @@ struct DiagnoseOptions {
 };
 
 Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options = {});
+
+// The measurement's model with the fitted effects switched on.
+Model compile_with(const Measurement& m, const std::vector<EffectFit>& effects);
 
 }  // namespace afford

@@ -25,6 +25,13 @@ std::string unit_of(const EffectParam& p) {
   return q.substr(q.find(' ') + 1);
 }
 
+std::string when(double t) {
+  if (t < 0) return "never";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f s", t);
+  return buf;
+}
+
 }  // namespace
 
 std::string report_text(const Diagnosis& d) {
@@ -74,6 +81,19 @@ std::string report_text(const Diagnosis& d) {
                   manifest_of(p.effect).name, p.rmse_nominal, p.rmse_alone, param.key, *lo, *hi);
     out += line;
   }
+  for (size_t i = 0; i < d.by_force_before.size() && i < d.by_force_after.size(); ++i) {
+    const ForceGap& b = d.by_force_before[i];
+    const ForceGap& a = d.by_force_after[i];
+    std::snprintf(line, sizeof line, "by force, %s: angle off by %.3g deg before, %.3g deg after (RMSE)\n", b.file.c_str(),
+                  b.angle_rmse * 180 / 3.14159265358979323846, a.angle_rmse * 180 / 3.14159265358979323846);
+    out += line;
+    for (size_t e = 0; e < b.events.size() && e < a.events.size(); ++e) {
+      std::snprintf(line, sizeof line, "  %s: measured at %s, simulated at %s before, %s after\n", b.events[e].event.c_str(),
+                    when(b.events[e].measured_t).c_str(), when(b.events[e].simulated_t).c_str(),
+                    when(a.events[e].simulated_t).c_str());
+      out += line;
+    }
+  }
   out += "selection:\n";
   for (const std::string& s : d.steps) out += "  " + s + "\n";
   return out;
@@ -120,7 +140,28 @@ std::string report_json(const Diagnosis& d) {
     }
     j += "]}";
   }
-  j += ",\"events\":[]";
+  j += ",\"events\":[";
+  bool first = true;
+  for (size_t i = 0; i < d.by_force_before.size() && i < d.by_force_after.size(); ++i) {
+    for (size_t e = 0; e < d.by_force_before[i].events.size(); ++e) {
+      const EventGap& b = d.by_force_before[i].events[e];
+      const EventGap& a = d.by_force_after[i].events[e];
+      j += std::string(first ? "" : ",") + "{\"trace\":" + json_string(d.by_force_before[i].file) + ",\"event\":\"" +
+           b.event + "\",\"measured_t\":" + (b.measured_t < 0 ? "null" : number(b.measured_t)) +
+           ",\"simulated_t_before\":" + (b.simulated_t < 0 ? "null" : number(b.simulated_t)) +
+           ",\"simulated_t_after\":" + (a.simulated_t < 0 ? "null" : number(a.simulated_t)) +
+           ",\"measured_force\":" + number(b.measured_force) + ",\"simulated_force_before\":" + number(b.simulated_force) +
+           ",\"simulated_force_after\":" + number(a.simulated_force) + "}";
+      first = false;
+    }
+  }
+  j += "],\"by_force\":[";
+  for (size_t i = 0; i < d.by_force_before.size() && i < d.by_force_after.size(); ++i) {
+    j += std::string(i ? "," : "") + "{\"trace\":" + json_string(d.by_force_before[i].file) + ",\"angle_rmse_before\":" +
+         number(d.by_force_before[i].angle_rmse) + ",\"angle_rmse_after\":" + number(d.by_force_after[i].angle_rmse) +
+         ",\"unit\":\"rad\"}";
+  }
+  j += "]";
   j += ",\"folds\":" + std::to_string(d.folds) + ",\"traces\":[";
   for (size_t i = 0; i < d.judged_on.size(); ++i) j += std::string(i ? "," : "") + json_string(d.judged_on[i]);
   j += "]}";

@@ -15,6 +15,7 @@
 #include "diagnose.h"
 #include "load.h"
 #include "patch.h"
+#include "state.h"
 #include "report.h"
 #include "test_util.h"
 
@@ -245,6 +246,54 @@ TEST(GapErrors, AnEffectOfTheMeasurementIsChecked) {
   EXPECT_THAT(measurement_error(kHead + "effort_at: 160 mm\ntrace: t.csv\neffects:\n  sensor_latency: {delay: 5 s}\n",
                                 good_csv()),
               HasSubstr("m.yaml:6:27: expected a value from 0 s to 1 s (delay, s), found '5 s'"));
+}
+
+TEST(Gap, ByForceTheContactAndTheBreakComeWhenMeasured) {
+  // The nutcracker closes on the walnut at 60 mm (1 deg/s after 0.2 s):
+  // the effort by moment balance written out here, the walnut's force
+  // k*d*h/(h-d) along the arc, broken at its 378 N. Replayed by force, the
+  // nominal model touches and cracks it when the trace says, to a frame.
+  const fs::path dir = scratch("events");
+  const Measurement probe = [&] {
+    write(dir / "x.csv", good_csv());
+    write(dir / "m.yaml", kHead + "actee: {file: " + kSource + "/actees/walnut.yaml, at: 60 mm}\n"
+                          "effort_at: 160 mm\ntrace: x.csv\n");
+    return load_measurement((dir / "m.yaml").string());
+  }();
+  const Model model = compile_measurement(probe);
+  const auto state = make_state(model);
+  const double a = 0.060, h = state->actee_thickness, theta_c = state->contact_angle;
+  const double k = 250e3, sp = 0.010, rest = 30 * kPi / 180;
+  std::string csv = "t,angle,effort_force,actee_force,broken\n";
+  double contact_t = -1, break_t = -1;
+  bool broken = false;
+  for (int i = 0; i < 3000; ++i) {
+    const double t = i * 1e-3;
+    const double theta = rest - std::max(0.0, t - 0.2) * kPi / 180 * 2;  // 2 deg/s
+    const double d = std::max(0.0, a * (theta_c - theta));
+    // The frame the load passes the limit still carries it; then nothing.
+    const double force = broken ? 0.0 : k * d * h / (h - d);
+    if (!broken && force > 378) {
+      broken = true;
+      break_t = t;
+    }
+    if (force > 0.01 * 378 && contact_t < 0) contact_t = t;  // the contact a force sensor sees
+    const double torque = 2000 * sp * (rest - theta) * sp + 1.5 * sp + force * a + (theta < rest ? 0.01 : 0.0);
+    char row[160];
+    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,%.6f,%d\n", t, theta, torque / 0.160, force, broken ? 1 : 0);
+    csv += row;
+  }
+  write(dir / "x.csv", csv);
+  const Measurement m = load_measurement((dir / "m.yaml").string());
+  const std::vector<ForceGap> gaps = replay_force(model, m);
+  ASSERT_EQ(gaps.size(), 1u);
+  ASSERT_EQ(gaps[0].events.size(), 2u);
+  EXPECT_NEAR(gaps[0].events[0].measured_t, contact_t, 1e-9);
+  EXPECT_NEAR(gaps[0].events[0].simulated_t, contact_t, 0.0015);
+  EXPECT_NEAR(gaps[0].events[1].measured_t, break_t, 1e-9);
+  EXPECT_NEAR(gaps[0].events[1].simulated_t, break_t, 0.0015);
+  EXPECT_GT(gaps[0].events[1].simulated_force, 378);
+  EXPECT_LT(gaps[0].angle_rmse, 1e-3);  // rad, up to the break
 }
 
 // ------------------------------------------------------------ real data
