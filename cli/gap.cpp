@@ -1,13 +1,16 @@
-// afford gap MEASUREMENT [--json] [--effects a,b,...] [--write-patch DIR]:
+// afford gap MEASUREMENT [--json] [--effects a,b,...] [--write-patch DIR] [--probe]:
 // where and why the nominal model differs from the measured tool, which
 // effect of the library explains it, and how far the gap shrinks on data
-// the fit never saw (gap/README.md).
+// the fit never saw (gap/README.md). With --probe: the lever and spring
+// from a probing trace (paper Sec. 3.2).
+#include <filesystem>
 #include <iostream>
 
 #include "commands.h"
 #include "did_you_mean.h"
 #include "diagnose.h"
 #include "patch.h"
+#include "probe.h"
 #include "report.h"
 
 namespace afford::cli {
@@ -38,11 +41,13 @@ bool parse_library(const std::string& list, std::vector<EffectKind>* out, std::s
 
 int run_gap(const Args& args) {
   std::string file, patch_dir;
-  bool json = false;
+  bool json = false, probe = false;
   DiagnoseOptions options;
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--json") {
       json = true;
+    } else if (args[i] == "--probe") {
+      probe = true;
     } else if (args[i] == "--effects") {
       if (i + 1 >= args.size()) return usage_error("--effects needs a list of effects, e.g. pivot_friction,arm_inertia");
       std::string error;
@@ -53,11 +58,22 @@ int run_gap(const Args& args) {
     } else if (file.empty() && args[i].rfind("--", 0) != 0) {
       file = args[i];
     } else {
-      return usage_error("gap: unexpected '" + args[i] + "'; usage: afford gap MEASUREMENT [--json] [--effects a,b] [--write-patch DIR]");
+      return usage_error("gap: unexpected '" + args[i] + "'; usage: afford gap MEASUREMENT [--json] [--effects a,b] [--write-patch DIR] [--probe]");
     }
   }
   if (file.empty()) return usage_error("gap needs a MEASUREMENT file");
   const Measurement m = load_measurement(file);
+  if (probe) {  // active modelling: the lever and spring from a probing trace
+    const ProbeResult p = probe_lever(m);
+    std::cout << probe_text(p);
+    if (!patch_dir.empty()) {
+      std::filesystem::create_directories(patch_dir);
+      const std::string out = (std::filesystem::path(patch_dir) / "object.yaml").string();
+      write_probed_object(p, out);
+      std::cerr << "wrote " << out << "\n";
+    }
+    return 0;
+  }
   const Diagnosis d = diagnose(m, options);
   std::cout << (json ? report_json(d) + "\n" : report_text(d));
   if (!patch_dir.empty()) {

@@ -15,6 +15,7 @@
 #include "diagnose.h"
 #include "load.h"
 #include "patch.h"
+#include "probe.h"
 #include "state.h"
 #include "report.h"
 #include "test_util.h"
@@ -294,6 +295,52 @@ TEST(Gap, ByForceTheContactAndTheBreakComeWhenMeasured) {
   EXPECT_NEAR(gaps[0].events[1].simulated_t, break_t, 0.0015);
   EXPECT_GT(gaps[0].events[1].simulated_force, 378);
   EXPECT_LT(gaps[0].angle_rmse, 1e-3);  // rad, up to the break
+}
+
+TEST(Gap, AProbeFindsTheLeverAndTheSpring) {
+  // A robot pushes at 160 mm on a tool like the nutcracker but opening to
+  // 40 deg, with a 3000 N/m spring at 10 mm (0.3 N*m/rad) preloaded with
+  // 10 N (0.1 N*m: enough to open it against the friction) and 0.05 N*m of
+  // pivot friction, closed to 5 deg: 0.5 s untouched, 2 s closing, pressed
+  // on at the stop, 2 s opening. The effort by moment balance, written out
+  // here; 0.01 N of noise.
+  const double deg = kPi / 180, b = 0.160, k = 0.3, preload = 0.1, friction = 0.05;
+  std::mt19937 random(3);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  std::string csv = "t,angle,effort_force\n";
+  for (int i = 0; i < 6000; ++i) {
+    const double t = i * 1e-3;
+    double theta = 40 * deg, torque = 0;
+    if (t >= 0.5 && t < 2.5) {
+      theta = (40 - 35 * (t - 0.5) / 2) * deg;
+      torque = k * (40 * deg - theta) + preload + friction;
+    } else if (t >= 2.5 && t < 3.5) {
+      theta = 5 * deg;  // on the closed stop, pressed harder
+      torque = k * 35 * deg + preload + friction + 2.0 * (t - 2.5);
+    } else if (t >= 3.5 && t < 5.5) {
+      theta = (5 + 35 * (t - 3.5) / 2) * deg;
+      torque = k * (40 * deg - theta) + preload - friction;
+    }
+    char row[96];
+    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f\n", t, theta, std::max(0.0, torque / b + (torque > 0 ? noise(random) : 0)));
+    csv += row;
+  }
+  const fs::path dir = scratch("probe");
+  write(dir / "p.csv", csv);
+  write(dir / "m.yaml", kHead + "effort_at: 160 mm\ntrace: p.csv\n");
+  const ProbeResult p = probe_lever(load_measurement((dir / "m.yaml").string()));
+  EXPECT_NEAR(p.theta_min, 5 * deg, 1e-9);
+  EXPECT_NEAR(p.theta_max, 40 * deg, 1e-9);
+  EXPECT_NEAR(p.theta_rest, 40 * deg, 1e-9);
+  EXPECT_NEAR(p.torsion, k, 0.003);
+  EXPECT_NEAR(p.spring_constant, 3000, 30);  // at the nominal file's 10 mm
+  EXPECT_NEAR(p.preload_torque, preload, 0.002);
+  EXPECT_NEAR(p.preload, 10.0, 0.2);
+  EXPECT_NEAR(p.friction, friction, 0.002);
+  write_probed_object(p, (dir / "object.yaml").string());
+  const ObjectSpec o = load_object((dir / "object.yaml").string());
+  EXPECT_NEAR(o.lever.theta_max, 40 * deg, 1e-6);
+  EXPECT_NEAR(o.spring.constant, p.spring_constant, 1e-3 * p.spring_constant);
 }
 
 // ------------------------------------------------------------ real data
