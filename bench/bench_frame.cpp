@@ -19,13 +19,7 @@ const std::string kSource = AFFORD_SOURCE_DIR;
 void BM_Frame(benchmark::State& bench, const char* name) {
   const CompiledSession session = load_session(kSource + "/sessions/" + name + ".yaml");
   const Model& model = session.model;
-  ScriptedAgent agent(session.script);
-  std::vector<Sample> samples;
-  Sample sample;
-  for (std::int64_t k = 1; agent.sample_at(static_cast<double>(k) * model.timestep, &sample); ++k) {
-    sample.t = static_cast<double>(k) * model.timestep;
-    samples.push_back(sample);
-  }
+  const std::vector<Sample> samples = script_samples(session.script, model.timestep);
   auto state = make_state(model);
   auto rules = make_rule_state(*session.rules);
   size_t next = 0;

@@ -20,13 +20,7 @@ int main(int argc, char** argv) {
   using namespace afford;
   const CompiledSession session = load_session(argv[1]);
   const Model& model = session.model;
-  ScriptedAgent agent(session.script);
-  std::vector<Sample> samples;
-  Sample sample;
-  for (std::int64_t k = 1; agent.sample_at(static_cast<double>(k) * model.timestep, &sample); ++k) {
-    sample.t = static_cast<double>(k) * model.timestep;
-    samples.push_back(sample);
-  }
+  const std::vector<Sample> samples = script_samples(session.script, model.timestep);
   auto state = make_state(model);
   auto rules = make_rule_state(*session.rules);
   const int passes = std::atoi(argv[2]);

@@ -36,4 +36,15 @@ bool ScriptedAgent::sample_at(double t, Sample* out) {
   return true;
 }
 
+std::vector<Sample> script_samples(const Script& script, double timestep) {
+  ScriptedAgent agent(script);
+  std::vector<Sample> samples;
+  Sample sample;
+  for (std::int64_t k = 1; agent.sample_at(static_cast<double>(k) * timestep, &sample); ++k) {
+    sample.t = static_cast<double>(k) * timestep;
+    samples.push_back(sample);
+  }
+  return samples;
+}
+
 }  // namespace afford

@@ -2,6 +2,8 @@
 // (engine/script.h), interpolating between its keyframes linearly in time.
 #pragma once
 
+#include <vector>
+
 #include "sample_source.h"
 #include "script.h"
 
@@ -27,5 +29,9 @@ class ScriptedAgent : public SampleSource {
  private:
   const Script& script_;
 };
+
+// Every sample of a script at frames of `timestep` seconds, the first at
+// t = timestep (benchmarks and tests that step without the run loop).
+std::vector<Sample> script_samples(const Script& script, double timestep);
 
 }  // namespace afford

@@ -15,19 +15,10 @@ constexpr double kMinExponent = 0.5, kMaxExponent = 4.0;  // the actee's power l
 
 bool is_linear(EffectKind k) { return k != EffectKind::sensor_latency && k != EffectKind::actee_compliance; }
 
-// y at time `at` by linear interpolation, held at the ends.
-double at_time(const std::vector<double>& t, const std::vector<double>& y, double at) {
-  if (at <= t.front()) return y.front();
-  if (at >= t.back()) return y.back();
-  const size_t j = static_cast<size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
-  const double w = (at - t[j - 1]) / (t[j] - t[j - 1]);
-  return (1 - w) * y[j - 1] + w * y[j];
-}
-
 std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay) {
   if (delay == 0) return y;
   std::vector<double> out(y.size());
-  for (size_t i = 0; i < y.size(); ++i) out[i] = at_time(t, y, t[i] - delay);
+  for (size_t i = 0; i < y.size(); ++i) out[i] = value_at(t, y, t[i] - delay);
   return out;
 }
 

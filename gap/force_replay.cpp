@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "forced_lever.h"
+#include "replay.h"
 #include "state.h"
 
 namespace afford {
@@ -11,14 +12,8 @@ namespace {
 
 // The measured effort `delay` later: a sensor with latency reports it late.
 double effort_at(const Trace& trace, size_t i, double delay) {
-  const std::vector<double>& t = trace[Signal::t];
   const std::vector<double>& f = trace[Signal::effort_force];
-  if (delay <= 0) return f[i];
-  const double at = t[i] + delay;
-  if (at >= t.back()) return f.back();
-  const size_t j = static_cast<size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
-  const double w = (at - t[j - 1]) / (t[j] - t[j - 1]);
-  return (1 - w) * f[j - 1] + w * f[j];
+  return delay <= 0 ? f[i] : value_at(trace[Signal::t], f, trace[Signal::t][i] + delay);
 }
 
 // When the measurement saw the actee touched and broken.

@@ -27,16 +27,6 @@ std::vector<double> rate_of(const std::vector<double>& t, const std::vector<doub
   return r;
 }
 
-// The value of y (sampled at t) at time `at`, linear between samples and
-// held before the first.
-double at_time(const std::vector<double>& t, const std::vector<double>& y, double at) {
-  if (at <= t.front()) return y.front();
-  if (at >= t.back()) return y.back();
-  const size_t j = static_cast<size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
-  const double w = (at - t[j - 1]) / (t[j] - t[j - 1]);
-  return (1 - w) * y[j - 1] + w * y[j];
-}
-
 // Phases from direction, contact and the limits; `limit` and `broken` say
 // which samples are at a limit and after the break.
 void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vector<bool>& broken) {
@@ -76,6 +66,14 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
 }
 
 }  // namespace
+
+double value_at(const std::vector<double>& t, const std::vector<double>& y, double at) {
+  if (at <= t.front()) return y.front();
+  if (at >= t.back()) return y.back();
+  const size_t j = static_cast<size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
+  const double w = (at - t[j - 1]) / (t[j] - t[j - 1]);
+  return (1 - w) * y[j - 1] + w * y[j];
+}
 
 double smooth_sign(double rate) { return std::tanh(rate / kSignWidth); }
 
@@ -136,7 +134,7 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
     }
     if (model.sensor_latency > 0) {  // the sensor reports the effort of `delay` ago
       const std::vector<double> prompt = r.nominal;
-      for (size_t i = 0; i < n; ++i) r.nominal[i] = at_time(r.t, prompt, r.t[i] - model.sensor_latency);
+      for (size_t i = 0; i < n; ++i) r.nominal[i] = value_at(r.t, prompt, r.t[i] - model.sensor_latency);
     }
     assign_phases(r, at_limit, broken);
     out.push_back(std::move(r));

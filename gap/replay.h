@@ -42,6 +42,10 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m);
 // measured displacement (the actee compiled with no tool).
 std::vector<Replay> replay_plates(const Model& actee_model, const Measurement& m);
 
+// y (sampled at the increasing times t) at time `at`: linear between
+// samples, held before the first and after the last.
+double value_at(const std::vector<double>& t, const std::vector<double>& y, double at);
+
 // The direction of motion, smoothed over a small speed so that a fit's
 // friction term is continuous (rad/s in, -1..1 out).
 double smooth_sign(double rate);

@@ -19,13 +19,11 @@ TEST(NoAllocation, EveryFrameOfEveryShippedSession) {
   for (const auto& entry : std::filesystem::directory_iterator(std::string(AFFORD_SOURCE_DIR) + "/sessions")) {
     if (entry.path().extension() != ".yaml") continue;
     const CompiledSession s = load_session(entry.path().string());
-    ScriptedAgent agent(s.script);
+    const std::vector<Sample> samples = script_samples(s.script, s.model.timestep);
     auto state = make_state(s.model);
     auto rules = make_rule_state(*s.rules);
-    Sample sample;
     long frames = 0, allocations = 0;
-    for (std::int64_t k = 1; agent.sample_at(static_cast<double>(k) * s.model.timestep, &sample); ++k) {
-      sample.t = static_cast<double>(k) * s.model.timestep;
+    for (const Sample& sample : samples) {
       const long before = allocation_count();
       step(s.model, *state, sample);
       evaluate(*s.rules, *rules, s.model, *state);
