@@ -9,7 +9,7 @@
 namespace afford {
 namespace {
 
-constexpr double kRateWindow = 0.002;    // s: rates by central differences over +- this
+constexpr double kRateWindow = 0.005;    // s: rates by central differences over +- this
 constexpr double kReversalWindow = 0.02; // s: samples this near a change of direction are a reversal
 constexpr double kLimitBand = 1e-3;      // rad: this near an angle limit counts as at it
 constexpr double kSignWidth = 1e-3;      // rad/s: friction's sign turns over this speed
@@ -37,7 +37,20 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
   for (double w : r.rate) peak = std::max(peak, std::abs(w));
   // Below this speed the arm is at rest: there Coulomb friction takes any
   // value up to its limit, which the motion alone cannot tell.
-  const double still = std::max(1e-9, 0.01 * peak);
+  // ... and below three times the noise of the rate itself, where its sign
+  // is the noise's (the noise of x from its second differences, as a
+  // median: the rate's is sqrt(2) of it over the difference's span).
+  std::vector<double> d2;
+  for (size_t i = 0; i + 2 < n; ++i) d2.push_back(std::abs(r.x[i] - 2 * r.x[i + 1] + r.x[i + 2]));
+  double rate_noise = 0;
+  if (!d2.empty()) {
+    std::nth_element(d2.begin(), d2.begin() + static_cast<long>(d2.size() / 2), d2.end());
+    const double x_noise = 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
+    const double dt = (r.t.back() - r.t.front()) / static_cast<double>(n - 1);
+    const double span = 2 * std::max(1.0, std::round(kRateWindow / dt)) * dt;
+    rate_noise = std::sqrt(2.0) * x_noise / span;
+  }
+  const double still = std::max({1e-9, 0.01 * peak, 3 * rate_noise});
   r.phase.assign(n, Phase::at_rest);
   r.fitted.assign(n, true);
   int last_sign = 0;
@@ -59,9 +72,10 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
   for (size_t i = 0; i < n; ++i) {
     if (at_limit[i]) r.phase[i] = Phase::at_limit;
     if (broken[i]) r.phase[i] = Phase::after_break;
-    // A limit's reaction, a broken actee and friction at rest are outside
-    // what the model predicts from the motion.
-    r.fitted[i] = !at_limit[i] && !broken[i] && std::abs(r.rate[i]) > still;
+    // A limit's reaction, a broken actee, and friction at rest and while it
+    // turns over at a reversal are outside what the model predicts from
+    // the motion: reported, not fitted or scored.
+    r.fitted[i] = !at_limit[i] && !broken[i] && std::abs(r.rate[i]) > still && r.phase[i] != Phase::reversal;
   }
 }
 

@@ -1,0 +1,54 @@
+// The withheld check of `afford gap`: MuJoCo plays the real tool. This
+// folder's code never calls afford's solver, its torque terms or the gap
+// library while it makes data; it reads the nominal tool files for their
+// numbers only. Labels are written apart from the traces and read by the
+// scorer after the diagnosis.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gapcheck {
+
+// The hidden truth of one case: what the real tool has beyond its file.
+struct Truth {
+  double friction = 0;     // N*m, added to the file's pivot friction
+  double damping = 0;      // N*m*s/rad
+  double preload = 0;      // N*m, added to the spring's preload torque
+  double cubic = 0;        // N/m^3, a progressive spring
+  double inertia = 0;      // kg*m^2, the arm's inertia about the pivot
+  double weight = 0;       // N*m, the arm's weight torque amplitude (pivot axis level)
+  double latency = 0;      // s, the effort sensor's delay
+  std::vector<std::string> names() const;  // the afford effect names of what is non-zero
+};
+
+// A nominal tool, by its numbers (from its object file).
+struct Tool {
+  std::string name, file;
+  double theta_min = 0, theta_max = 0, rest = 0;  // rad
+  double torsion = 0;        // N*m/rad, S_k * S_p^2
+  double preload_torque = 0; // N*m, at rest
+  double friction = 0;       // N*m, the file's pivot friction (0 if off)
+  double spring_position = 0;  // m, |S_p|
+  double spring_constant = 0;  // N/m
+  double effort_at = 0;      // m, where the effort is applied and measured (its distance from the fulcrum)
+  int effort_sign = 1;       // -1: on the handle side of a type 1 lever
+};
+
+// One drive of the emphasis: the arm's angle against time.
+struct Profile {
+  std::string name;  // "sine-slow", ...
+  double period = 0; // s
+  bool triangle = false;
+  double seconds = 0;
+};
+
+struct Sample {
+  double t, angle, effort, actee;
+};
+
+// Runs MuJoCo on the tool with the truth along the profile; 1 kHz samples
+// with the sensor's noise (0.02 N, 1e-4 rad, fixed seed) and quantisation.
+std::vector<Sample> simulate(const Tool& tool, const Truth& truth, const Profile& profile, unsigned seed);
+
+}  // namespace gapcheck
