@@ -6,25 +6,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include "report.h"
 #include "units.h"
 
 namespace afford {
 namespace {
 
 namespace fs = std::filesystem;
-
-// "0.3112 N*m": the value in SI with its unit, as the files are written.
-std::string quantity(double si, const EffectParam& p) {
-  char buf[64];
-  if (p.dimension == dim::none) {
-    std::snprintf(buf, sizeof buf, "%.6g", si);
-    return buf;
-  }
-  std::string unit = p.dimension == dim::length ? "m" : format_quantity(1, p.dimension);
-  unit = unit.substr(unit.find(' ') + 1);
-  std::snprintf(buf, sizeof buf, "%.6g %s", si, unit.c_str());
-  return buf;
-}
 
 // The file as YAML with the effects of `home` among `fits` switched on.
 YAML::Node patched(const std::string& file, const std::vector<EffectFit>& fits, EffectHome home) {
@@ -33,15 +21,15 @@ YAML::Node patched(const std::string& file, const std::vector<EffectFit>& fits, 
     const EffectManifest& m = manifest_of(e.kind);
     if (m.home != home) continue;
     YAML::Node effect;
-    for (size_t i = 0; i < m.params.size(); ++i) effect[m.params[i].key] = quantity(e.value[i], m.params[i]);
+    for (size_t i = 0; i < m.params.size(); ++i) effect[m.params[i].key] = si_quantity(e.value[i], m.params[i]);
     // The spring section's preload is this effect's parameter: given once.
     if (e.kind == EffectKind::spring_preload && root["spring"] && root["spring"]["preload"]) {
-      root["spring"]["preload"] = quantity(e.value[0], m.params[0]);
+      root["spring"]["preload"] = si_quantity(e.value[0], m.params[0]);
       continue;
     }
     if (e.kind == EffectKind::spring_preload && root["spring"] && root["spring"]["rest_length"]) {
       root["spring"].remove("rest_length");
-      root["spring"]["preload"] = quantity(e.value[0], m.params[0]);
+      root["spring"]["preload"] = si_quantity(e.value[0], m.params[0]);
       continue;
     }
     root["effects"][m.name] = effect;
@@ -106,7 +94,7 @@ std::vector<std::string> write_patch(const Measurement& m, const Diagnosis& d, c
   for (const EffectFit& e : d.effects) {
     const EffectManifest& mf = manifest_of(e.kind);
     if (mf.home != EffectHome::measurement) continue;
-    for (size_t i = 0; i < mf.params.size(); ++i) measurement["effects"][mf.name][mf.params[i].key] = quantity(e.value[i], mf.params[i]);
+    for (size_t i = 0; i < mf.params.size(); ++i) measurement["effects"][mf.name][mf.params[i].key] = si_quantity(e.value[i], mf.params[i]);
   }
   written.push_back(write(fs::path(dir) / "measurement.yaml", measurement, m.file));
   return written;

@@ -17,9 +17,9 @@ namespace {
 constexpr double kRestForce = 0.02;   // of the largest effort: below this the hand does not touch
 constexpr double kBand = 0.02;        // of the range: this near a limit counts as on it
 
-std::string quantity(double si, const Dimension& d, const char* unit, double per_unit) {
+// "30 deg": an SI value in a unit of per_unit SI each.
+std::string in_unit(double si, const char* unit, double per_unit) {
   char buf[64];
-  (void)d;
   std::snprintf(buf, sizeof buf, "%.6g %s", si / per_unit, unit);
   return buf;
 }
@@ -110,17 +110,17 @@ std::string probe_text(const ProbeResult& p) {
 void write_probed_object(const ProbeResult& p, const std::string& path) {
   const double deg = 3.14159265358979323846 / 180;
   YAML::Node root = YAML::LoadFile(p.object_file);
-  root["lever"]["theta_min"] = quantity(p.theta_min, dim::angle, "deg", deg);
-  root["lever"]["theta_max"] = quantity(p.theta_max, dim::angle, "deg", deg);
+  root["lever"]["theta_min"] = in_unit(p.theta_min, "deg", deg);
+  root["lever"]["theta_max"] = in_unit(p.theta_max, "deg", deg);
   // A spring that pushes at rest holds the tool on its open stop.
   const double rest = p.preload > 0 ? p.theta_max : std::clamp(p.theta_rest, p.theta_min, p.theta_max);
-  root["lever"]["rest"] = quantity(rest, dim::angle, "deg", deg);
-  root["spring"]["constant"] = quantity(p.spring_constant, dim::stiffness, "N/m", 1);
+  root["lever"]["rest"] = in_unit(rest, "deg", deg);
+  root["spring"]["constant"] = in_unit(p.spring_constant, "N/m", 1);
   if (root["spring"]["rest_length"]) root["spring"].remove("rest_length");
-  root["spring"]["preload"] = quantity(std::max(0.0, p.preload), dim::force, "N", 1);
+  root["spring"]["preload"] = in_unit(std::max(0.0, p.preload), "N", 1);
   if (root["effects"] && root["effects"]["spring_preload"]) root["effects"].remove("spring_preload");
   if (p.friction > 2 * p.friction_sigma && p.friction > 0) {
-    root["effects"]["pivot_friction"]["torque"] = quantity(p.friction, dim::torque, "N*m", 1);
+    root["effects"]["pivot_friction"]["torque"] = in_unit(p.friction, "N*m", 1);
   }
   YAML::Emitter out;
   out << root;

@@ -17,14 +17,6 @@ std::string number(double x) {
   return buf;
 }
 
-// The SI unit of a parameter: values are reported in SI.
-std::string unit_of(const EffectParam& p) {
-  if (p.dimension == dim::none) return "";
-  if (p.dimension == dim::length) return "m";
-  const std::string q = format_quantity(1, p.dimension);  // "1 N*m": the others show in SI
-  return q.substr(q.find(' ') + 1);
-}
-
 std::string when(double t) {
   if (t < 0) return "never";
   char buf[32];
@@ -33,6 +25,19 @@ std::string when(double t) {
 }
 
 }  // namespace
+
+std::string si_unit(const EffectParam& p) {
+  if (p.dimension == dim::none) return "";
+  if (p.dimension == dim::length) return "m";
+  const std::string q = format_quantity(1, p.dimension);  // "1 N*m": the others show in SI
+  return q.substr(q.find(' ') + 1);
+}
+
+std::string si_quantity(double si, const EffectParam& p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", si);
+  return p.dimension == dim::none ? std::string(buf) : std::string(buf) + " " + si_unit(p);
+}
 
 std::string report_text(const Diagnosis& d) {
   std::string out = "measurement " + d.measurement + ": verdict " + verdict_name(d.verdict) + "\n";
@@ -53,7 +58,7 @@ std::string report_text(const Diagnosis& d) {
     const EffectManifest& m = manifest_of(e.kind);
     out += "  " + std::string(m.name) + ":";
     for (size_t i = 0; i < m.params.size(); ++i) {
-      std::snprintf(line, sizeof line, " %s %.4g +- %.2g %s", m.params[i].key, e.value[i], e.sigma[i], unit_of(m.params[i]).c_str());
+      std::snprintf(line, sizeof line, " %s %.4g +- %.2g %s", m.params[i].key, e.value[i], e.sigma[i], si_unit(m.params[i]).c_str());
       out += line;
     }
     out += "\n";
@@ -107,7 +112,7 @@ std::string report_json(const Diagnosis& d) {
     j += std::string(e ? "," : "") + "{\"name\":\"" + m.name + "\",\"parameters\":{";
     for (size_t i = 0; i < m.params.size(); ++i) {
       j += std::string(i ? "," : "") + "\"" + m.params[i].key + "\":{\"value\":" + number(d.effects[e].value[i]) +
-           ",\"unit\":\"" + (m.params[i].dimension == dim::none ? "" : std::string(unit_of(m.params[i]))) +
+           ",\"unit\":\"" + (m.params[i].dimension == dim::none ? "" : std::string(si_unit(m.params[i]))) +
            "\",\"uncertainty\":" + number(d.effects[e].sigma[i]) + "}";
     }
     j += "}}";
