@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "errors.h"
 #include "device_description.h"
+#include "rule_tests.h"
 #include "validate.h"
 
 namespace afford::cli {
@@ -12,11 +13,20 @@ namespace {
 
 std::string check_device(const Node& root) { return "device " + read_device_description(root).name; }
 
+// A rule test's keys, and the session and rules it names; not for a case
+// whose point is that they fail to load (`error:`).
+std::string check_rule_test(const Node& root) {
+  const RuleCase c = read_rule_case(root);
+  if (!c.error) compile_rule_case(c);
+  return "rule test " + c.name;
+}
+
 }  // namespace
 
 int run_check(const Args& args) {
   if (args.empty()) return usage_error("check needs at least one FILE");
   add_file_kind("device", check_device);  // device descriptions live in devices/
+  add_file_kind("test", check_rule_test);  // rule tests live in tests/rules/
   int errors = 0;
   for (const std::string& path : args) {
     try {
