@@ -5,6 +5,7 @@
 #include "errors.h"
 #include "device_description.h"
 #include "measurement.h"
+#include "rule_tests.h"
 #include "validate.h"
 
 namespace afford::cli {
@@ -18,12 +19,21 @@ std::string check_measurement(const Node& root) {
   return "measurement " + m.name + ", " + std::to_string(m.traces.size()) + " traces";
 }
 
+// A rule test's keys, and the session and rules it names; not for a case
+// whose point is that they fail to load (`error:`).
+std::string check_rule_test(const Node& root) {
+  const RuleCase c = read_rule_case(root);
+  if (!c.error) compile_rule_case(c);
+  return "rule test " + c.name;
+}
+
 }  // namespace
 
 int run_check(const Args& args) {
   if (args.empty()) return usage_error("check needs at least one FILE");
   add_file_kind("device", check_device);  // device descriptions live in devices/
   add_file_kind("measurement", check_measurement);  // and measurements in gap/
+  add_file_kind("test", check_rule_test);  // rule tests live in tests/rules/
   int errors = 0;
   for (const std::string& path : args) {
     try {

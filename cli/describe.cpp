@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 
 #include "commands.h"
 #include "derive.h"
@@ -127,6 +128,10 @@ int run_describe(const Args& args) {
   const Node root = load_yaml_file(file);
   const std::string kind = file_kind(root);
   if (kind != "object") return usage_error("describe reads object files; " + file + " is a " + kind + " file");
+  if (actees_given && !std::filesystem::is_directory(actee_dir)) {
+    // Asked for by name: an empty list would hide the typo.
+    throw std::runtime_error("--actees " + actee_dir + ": not a readable directory");
+  }
   if (!actees_given) {
     // The shipped actees sit beside the objects folder.
     actee_dir = (std::filesystem::path(file).parent_path().parent_path() / "actees").string();

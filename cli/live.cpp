@@ -1,5 +1,5 @@
 // afford live SESSION --device DEV.yaml [--duration S] [--record FILE]
-//                     [--wait S] [--silence S]:
+//                     [--wait S] [--silence S] [--out DIR]:
 // runs the session's frame loop at its timestep (1 kHz) in real time
 // against a USB device described by DEV.yaml (devices/README.md): the
 // session gives the model and the function models (its script is not
@@ -8,8 +8,9 @@
 // Inferred functions are printed as they happen; at the end, why the
 // session ended, the reports received and those skipped, by reason. If the
 // device disappears the session ends cleanly, says so, and keeps what was
-// recorded. Ctrl-C ends it the same way. The session is always recorded
-// (to --record FILE, default out/<session>/live.afrec).
+// recorded. Ctrl-C ends it the same way. It writes DIR/timeline.jsonl and
+// DIR/trace.csv as `afford run` does (DIR: --out, default out/<session>) and
+// is always recorded (to --record FILE, default DIR/live.afrec).
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -19,6 +20,7 @@
 #include <optional>
 
 #include "commands.h"
+#include "session_outputs.h"
 #include "recording.h"
 #include "report_decoder.h"
 #include "run.h"
@@ -55,7 +57,7 @@ double parse_seconds(const std::string& s, const char* option, bool* ok) {
 }  // namespace
 
 int run_live(const Args& args) {
-  std::string file, device_file, record;
+  std::string file, device_file, record, out_dir;
   double duration = std::numeric_limits<double>::infinity(), wait = 0, silence = 2;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -64,6 +66,9 @@ int run_live(const Args& args) {
     if (a == "--device") {
       if (!has_value) return usage_error("--device needs a device description (devices/*.yaml)");
       device_file = args[++i];
+    } else if (a == "--out") {
+      if (!has_value) return usage_error("--out needs a DIR");
+      out_dir = args[++i];
     } else if (a == "--record") {
       if (!has_value) return usage_error("--record needs a FILE");
       record = args[++i];
@@ -94,15 +99,12 @@ int run_live(const Args& args) {
     std::cerr << "afford: " << error << "\n";
     return 1;
   }
-  // A live session is always recorded: to --record FILE, or by default to
-  // out/<session>/live.afrec.
-  if (record.empty()) {
-    const std::filesystem::path dir = std::filesystem::path("out") / session.name;
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
-    record = (dir / "live.afrec").string();
-  }
+  // DIR/timeline.jsonl and DIR/trace.csv as `afford run` writes them; DIR
+  // is out/<session> unless --out says. A live session is always recorded:
+  // to --record FILE, or by default to DIR/live.afrec.
+  const std::filesystem::path dir = output_dir(out_dir, session.name);
+  SessionOutputs outputs(dir);
+  if (record.empty()) record = (dir / "live.afrec").string();
   std::optional<Recorder> recorder;
   recorder.emplace(record, session, "device " + device.name + " (" + device_file + ")");
 
@@ -111,7 +113,7 @@ int run_live(const Args& args) {
   RealTimeSource source(*usb, stream, device.resample, device.rate, duration, &g_stop, std::max(2.0, silence));
   EventPrinter printer;
   HapticObserver haptic(*usb);
-  std::vector<Observer*> observers = {&printer};
+  std::vector<Observer*> observers = {&printer, outputs.timeline(), outputs.trace()};
   if (device.has_out) observers.push_back(&haptic);
   if (recorder) observers.push_back(&*recorder);
 
@@ -155,6 +157,7 @@ int run_live(const Args& args) {
     }
     std::printf("recorded %lld frames to %s\n", static_cast<long long>(recorder->frames()), record.c_str());
   }
+  std::printf("wrote %s\n", outputs.written().c_str());
   return 0;
 }
 

@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "progress.h"
 #include "derive.h"
 #include "guides.h"
 #include "session.h"
@@ -84,7 +85,12 @@ int run_render(const Args& args) {
     o.guides = &computed;
     std::printf("guides from %s: %zu drawn\n", guides_file.c_str(), computed.guides.size());
   }
-  const render::RenderSessionResult r = render::render_session(session, o);
+  render::RenderSessionResult r;
+  {
+    TerminalProgress progress;
+    o.progress = [&progress](int done, int total) { progress.update(done, total); };
+    r = render::render_session(session, o);
+  }
   std::printf("session %s: %d frames at %g fps, %dx%d, in %s\n", session.name.c_str(), r.frames, o.fps, o.width,
               o.height, o.out_dir.c_str());
   std::printf("key moments (contact_sheet.png):\n");

@@ -1,15 +1,19 @@
-// afford replay REC [--rules FILE] [--json]: re-runs a recording (made by
+// afford replay REC [--rules FILE] [--json] [--out DIR]: re-runs a recording (made by
 // `afford run --record` or `afford live`) from its recorded model files and
 // samples, and checks that every frame's events are the recorded ones, bit
 // for bit (exit 1 at the first frame that differs). With --rules it re-runs
 // under the function models of FILE instead and prints the difference of
-// the two timelines (exit 0).
+// the two timelines (exit 0). --out DIR also writes DIR/timeline.jsonl and
+// DIR/trace.csv, as `afford run` does.
 #include <cstdio>
 #include <iostream>
+#include <optional>
+#include <vector>
 
 #include "commands.h"
 #include "recording_source.h"
 #include "run.h"
+#include "session_outputs.h"
 #include "timeline_diff.h"
 #include "trace.h"
 
@@ -66,11 +70,14 @@ void check_events(const Recording& rec, const RuleSet& rules) {
 }  // namespace
 
 int run_replay(const Args& args) {
-  std::string file, rules_file;
+  std::string file, rules_file, out_dir;
   bool json = false;
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--json") {
       json = true;
+    } else if (args[i] == "--out") {
+      if (i + 1 >= args.size()) return usage_error("--out needs a DIR");
+      out_dir = args[++i];
     } else if (args[i] == "--rules") {
       if (i + 1 >= args.size()) return usage_error("--rules needs a FILE of function models");
       rules_file = args[++i];
@@ -100,10 +107,17 @@ int run_replay(const Args& args) {
     std::cout.flush();
   }
   RecordingSource source(rec);
+  std::optional<SessionOutputs> outputs;
+  if (!out_dir.empty()) outputs.emplace(out_dir);
+  // The checkers first, then the files when asked for.
+  const auto with_outputs = [&outputs](std::vector<Observer*> observers) {
+    if (outputs) observers.insert(observers.end(), {outputs->timeline(), outputs->trace()});
+    return observers;
+  };
 
   if (rules_file.empty()) {
     ReplayChecker checker(rec, true);
-    Observer* const observers[] = {&checker};
+    const std::vector<Observer*> observers = with_outputs({&checker});
     const RunResult result = run_session(session.model, *session.rules, source, observers);
     if (json) {
       std::string j = "{\"recording\":" + json_string(rec.file) + ",\"session\":" + json_string(rec.session_name) +
@@ -133,7 +147,7 @@ int run_replay(const Args& args) {
   const std::shared_ptr<const RuleSet> rules = load_rules(rules_file);  // DataError: file:line:col
   ReplayChecker physics(rec, false);  // the state must still be the recorded one
   TimelineCollector rerun(rec.events.size() + 1024);
-  Observer* const observers[] = {&physics, &rerun};
+  const std::vector<Observer*> observers = with_outputs({&physics, &rerun});
   const RunResult result = run_session(session.model, *rules, source, observers);
   std::vector<NamedEvent> recorded;
   recorded.reserve(rec.events.size());

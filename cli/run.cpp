@@ -17,6 +17,7 @@
 #include "run.h"
 #include "scripted_agent.h"
 #include "session.h"
+#include "session_outputs.h"
 #include "trace.h"
 
 namespace afford::cli {
@@ -30,18 +31,7 @@ std::string number(double v) {
   return buf;
 }
 
-// An output file, closed when it goes out of scope.
-struct OutFile {
-  explicit OutFile(const fs::path& path) : file(std::fopen(path.c_str(), "w")) {
-    if (file == nullptr) throw std::runtime_error("cannot write " + path.string());
-  }
-  ~OutFile() { std::fclose(file); }
-  OutFile(const OutFile&) = delete;
-  OutFile& operator=(const OutFile&) = delete;
-  std::FILE* file;
-};
-
-void print_text(const CompiledSession& s, const RunResult& r, const fs::path& out) {
+void print_text(const CompiledSession& s, const RunResult& r, const std::string& written) {
   std::cout << "session " << s.name << ": " << s.description << "\n";
   std::cout << r.frames << " frames of " << format_quantity(s.model.timestep, dim::time) << " to "
             << number(r.end_time) << " s\n";
@@ -50,7 +40,7 @@ void print_text(const CompiledSession& s, const RunResult& r, const fs::path& ou
     std::printf("%s at %.3f s\n", inf.function.c_str(), inf.t);
     for (const NodeExplanation& n : inf.nodes) std::printf("  %8.3f s  %s\n", n.t, n.text.c_str());
   }
-  std::cout << "wrote " << (out / "timeline.jsonl").string() << " and " << (out / "trace.csv").string() << "\n";
+  std::cout << "wrote " << written << "\n";
 }
 
 void print_json(const CompiledSession& s, const RunResult& r) {
@@ -73,18 +63,13 @@ void print_json(const CompiledSession& s, const RunResult& r) {
 // the verdicts.
 void run_once(const CompiledSession& session, const std::string& out_dir, bool json,
               const std::string& record = {}) {
-  const fs::path out = out_dir.empty() ? fs::path("out") / session.name : fs::path(out_dir);
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw std::runtime_error("cannot create " + out.string() + ": " + ec.message());
   RunResult result;
   std::int64_t recorded = -1;
+  std::string written;
   {
-    OutFile timeline(out / "timeline.jsonl");
-    OutFile trace(out / "trace.csv");
-    TimelineWriter timeline_writer(timeline.file);
-    TraceWriter trace_writer(trace.file);
-    std::vector<Observer*> observers = {&timeline_writer, &trace_writer};
+    SessionOutputs outputs(output_dir(out_dir, session.name));
+    written = outputs.written();
+    std::vector<Observer*> observers = {outputs.timeline(), outputs.trace()};
     std::optional<Recorder> recorder;
     if (!record.empty()) observers.push_back(&recorder.emplace(record, session, "script " + session.file));
     ScriptedAgent agent(session.script);
@@ -95,7 +80,7 @@ void run_once(const CompiledSession& session, const std::string& out_dir, bool j
   if (json) {
     print_json(session, result);
   } else {
-    print_text(session, result, out);
+    print_text(session, result, written);
     if (recorded >= 0) std::cout << "recorded " << recorded << " frames to " << record << "\n";
   }
   std::cout.flush();

@@ -11,21 +11,12 @@
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
+#include <zlib.h>
 
 namespace afford {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::array<std::uint32_t, 256> make_crc_table() {
-  std::array<std::uint32_t, 256> table{};
-  for (std::uint32_t i = 0; i < 256; ++i) {
-    std::uint32_t c = i;
-    for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-    table[i] = c;
-  }
-  return table;
-}
 
 // A growing buffer for the header (written once; frames use a fixed one).
 class ByteWriter {
@@ -84,12 +75,9 @@ int write_all(int fd, const unsigned char* p, size_t n) {
 
 }  // namespace
 
+// zlib's (table-driven, several bytes at a time); the frame path calls it on every record.
 std::uint32_t crc32(const void* data, size_t n, std::uint32_t crc) {
-  static const std::array<std::uint32_t, 256> kTable = make_crc_table();
-  const auto* p = static_cast<const unsigned char*>(data);
-  crc = ~crc;
-  for (size_t i = 0; i < n; ++i) crc = kTable[(crc ^ p[i]) & 0xFFu] ^ (crc >> 8);
-  return ~crc;
+  return static_cast<std::uint32_t>(::crc32_z(crc, static_cast<const Bytef*>(data), n));
 }
 
 std::uint64_t fnv1a64(std::string_view bytes) {

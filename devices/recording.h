@@ -82,7 +82,7 @@ inline constexpr size_t kFrameFixedPayload = 8 + 8 + 12 * 8 + 15 * 8 + 15 * 8 + 
 inline constexpr size_t kEventBytes = 1 + 2 + 2 + 8;
 inline constexpr size_t kEndPayload = 8 + 8;
 
-// CRC-32 (IEEE, reflected 0xEDB88320), as zlib's crc32(); `crc` continues
+// CRC-32 (IEEE, reflected 0xEDB88320): zlib's crc32(); `crc` continues
 // an earlier one.
 std::uint32_t crc32(const void* data, size_t n, std::uint32_t crc = 0);
 // FNV-1a 64, as state_hash: identifies a model file's bytes.

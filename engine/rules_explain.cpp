@@ -7,15 +7,22 @@
 namespace afford {
 namespace {
 
-std::string format_value(double v, bool boolean, const Dimension& d) {
+constexpr int kDigits = 4;     // significant digits of a value, unless more are needed
+constexpr int kMaxDigits = 17;  // enough to tell any two doubles apart
+
+std::string format_value(double v, bool boolean, const Dimension& d, int digits = kDigits) {
   if (boolean) return v != 0 ? "true" : "false";
   if (d == dim::none) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
     return buf;
   }
-  return format_quantity(v, d);
+  return format_quantity(v, d, digits);
 }
+
+// A strict comparison that held must not read "35 N > 35 N": the digits
+// grow until its two sides print differently (rounding keeps the order).
+bool strict(const std::string& op) { return op == "<" || op == ">" || op == "!="; }
 
 class Writer {
  public:
@@ -27,20 +34,33 @@ class Writer {
       return write(e.children[0]) + " " + e.op + " " + write(e.children[1]);
     }
     if (e.kind == ExprKind::binary && is_comparison(e.op)) {
-      return operand(e.children[0]) + " " + e.op + " " + operand(e.children[1]);
+      const int digits = digits_for(index, e);
+      return operand(e.children[0], digits) + " " + e.op + " " + operand(e.children[1], digits);
     }
     if (e.kind == ExprKind::unary && e.op == "not") return "not (" + write(e.children[0]) + ")";
     return operand(index);
   }
 
  private:
+  std::string shown(int index, int digits) const {
+    const size_t i = static_cast<size_t>(index);
+    return format_value(values_[i], node_.tree_boolean[i], node_.tree_dimension[i], digits);
+  }
+
+  int digits_for(int index, const ExprNode& e) const {
+    int digits = kDigits;
+    if (!strict(e.op) || values_[static_cast<size_t>(index)] == 0) return digits;
+    while (digits < kMaxDigits && shown(e.children[0], digits) == shown(e.children[1], digits)) ++digits;
+    return digits;
+  }
+
   // A literal reads as written; anything else gets its value.
-  std::string operand(int index) const {
+  std::string operand(int index, int digits = kDigits) const {
     const ExprNode& e = node_.tree.nodes[static_cast<size_t>(index)];
     if (e.kind == ExprKind::number || e.kind == ExprKind::boolean) return e.text;
     const size_t i = static_cast<size_t>(index);
     if (node_.tree_boolean[i] && values_[i] != 0) return e.text;  // a condition that held
-    return e.text + " = " + format_value(values_[i], node_.tree_boolean[i], node_.tree_dimension[i]);
+    return e.text + " = " + shown(index, digits);
   }
 
   const RuleNode& node_;

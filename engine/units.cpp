@@ -190,7 +190,7 @@ std::optional<Quantity> parse_quantity(std::string_view text, std::string* error
   return unit;
 }
 
-std::string format_quantity(double si, const Dimension& d) {
+std::string format_quantity(double si, const Dimension& d, int digits) {
   struct Display {
     Dimension d;
     double factor;
@@ -212,11 +212,11 @@ std::string format_quantity(double si, const Dimension& d) {
   }
   for (const Display& disp : kDisplay) {
     if (disp.d == d) {
-      std::snprintf(buf, sizeof buf, "%.4g %s", si / disp.factor, disp.unit);
+      std::snprintf(buf, sizeof buf, "%.*g %s", digits, si / disp.factor, disp.unit);
       return buf;
     }
   }
-  std::snprintf(buf, sizeof buf, "%.4g %s", si, d.str().c_str());
+  std::snprintf(buf, sizeof buf, "%.*g %s", digits, si, d.str().c_str());
   return buf;
 }
 

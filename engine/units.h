@@ -57,7 +57,7 @@ std::optional<Quantity> parse_unit(std::string_view text, std::string* error);
 std::optional<Quantity> parse_quantity(std::string_view text, std::string* error);
 
 // Formats an SI value in the unit a user is likely to read ("18 mm").
-std::string format_quantity(double si, const Dimension& d);
+std::string format_quantity(double si, const Dimension& d, int digits = 4);
 
 // Parses a finite decimal number, the whole text; nullopt otherwise.
 std::optional<double> parse_number(std::string_view text);

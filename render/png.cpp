@@ -1,27 +1,16 @@
 #include "png.h"
 
-#include <array>
+#include <zlib.h>
+
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace afford::render {
 namespace {
 
 constexpr std::uint8_t kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-constexpr size_t kMaxStored = 65535;  // bytes in one stored deflate block
-
-const std::array<std::uint32_t, 256>& crc_table() {
-  static const std::array<std::uint32_t, 256> kTable = [] {
-    std::array<std::uint32_t, 256> t{};
-    for (std::uint32_t n = 0; n < 256; ++n) {
-      std::uint32_t c = n;
-      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      t[n] = c;
-    }
-    return t;
-  }();
-  return kTable;
-}
+constexpr int kLevel = 1;  // deflate level: level 1 is ~10x faster than 6 and only a little larger here
 
 void put32(std::vector<std::uint8_t>& out, std::uint32_t v) {
   for (int s = 24; s >= 0; s -= 8) out.push_back(static_cast<std::uint8_t>(v >> s));
@@ -31,31 +20,57 @@ std::uint32_t get32(const std::uint8_t* p) {
   return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) | p[3];
 }
 
-void chunk(std::vector<std::uint8_t>& out, const char type[4], const std::vector<std::uint8_t>& data) {
-  put32(out, static_cast<std::uint32_t>(data.size()));
+std::uint32_t crc(const std::uint8_t* data, size_t n) {
+  return static_cast<std::uint32_t>(::crc32_z(::crc32_z(0, nullptr, 0), data, n));
+}
+
+void chunk(std::vector<std::uint8_t>& out, const char type[4], const std::uint8_t* data, size_t n) {
+  put32(out, static_cast<std::uint32_t>(n));
   const size_t start = out.size();
   out.insert(out.end(), type, type + 4);
-  out.insert(out.end(), data.begin(), data.end());
-  put32(out, crc32(out.data() + start, out.size() - start));
+  out.insert(out.end(), data, data + n);
+  put32(out, crc(out.data() + start, out.size() - start));
+}
+
+// Inflates a whole zlib stream whose size is known (the scanlines).
+std::vector<std::uint8_t> inflate_all(const std::vector<std::uint8_t>& z, size_t expected) {
+  std::vector<std::uint8_t> raw(expected);
+  uLongf n = static_cast<uLongf>(expected);
+  const int rc = ::uncompress(raw.data(), &n, z.data(), static_cast<uLong>(z.size()));
+  if (rc == Z_BUF_ERROR) throw PngError("more image data than the size says");
+  if (rc != Z_OK) throw PngError("bad zlib data in IDAT");
+  if (n != expected) throw PngError("wrong amount of image data");
+  return raw;
+}
+
+std::uint8_t paeth(int a, int b, int c) {
+  const int p = a + b - c;
+  const int pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
+  return static_cast<std::uint8_t>(pa <= pb && pa <= pc ? a : pb <= pc ? b : c);
+}
+
+// Undoes the row filters in place; bpp is bytes per pixel.
+void unfilter(std::vector<std::uint8_t>& raw, size_t row, int h, size_t bpp) {
+  for (int y = 0; y < h; ++y) {
+    std::uint8_t* cur = &raw[(row + 1) * static_cast<size_t>(y)];
+    const std::uint8_t* prev = y > 0 ? cur - (row + 1) + 1 : nullptr;
+    const std::uint8_t f = cur[0];
+    std::uint8_t* p = cur + 1;
+    for (size_t i = 0; i < row; ++i) {
+      const int a = i >= bpp ? p[i - bpp] : 0, b = prev ? prev[i] : 0, c = prev && i >= bpp ? prev[i - bpp] : 0;
+      switch (f) {
+        case 0: break;
+        case 1: p[i] = static_cast<std::uint8_t>(p[i] + a); break;
+        case 2: p[i] = static_cast<std::uint8_t>(p[i] + b); break;
+        case 3: p[i] = static_cast<std::uint8_t>(p[i] + (a + b) / 2); break;
+        case 4: p[i] = static_cast<std::uint8_t>(p[i] + paeth(a, b, c)); break;
+        default: throw PngError("unknown row filter " + std::to_string(f));
+      }
+    }
+  }
 }
 
 }  // namespace
-
-std::uint32_t crc32(const std::uint8_t* data, size_t n, std::uint32_t crc) {
-  const auto& t = crc_table();
-  std::uint32_t c = crc ^ 0xFFFFFFFFu;
-  for (size_t i = 0; i < n; ++i) c = t[(c ^ data[i]) & 0xFF] ^ (c >> 8);
-  return c ^ 0xFFFFFFFFu;
-}
-
-std::uint32_t adler32(const std::uint8_t* data, size_t n, std::uint32_t adler) {
-  std::uint32_t a = adler & 0xFFFF, b = adler >> 16;
-  for (size_t i = 0; i < n; ++i) {
-    a = (a + data[i]) % 65521;
-    b = (b + a) % 65521;
-  }
-  return (b << 16) | a;
-}
 
 std::vector<std::uint8_t> encode_png(const Image& img) {
   if (img.width <= 0 || img.height <= 0) throw PngError("cannot encode an empty image");
@@ -68,90 +83,84 @@ std::vector<std::uint8_t> encode_png(const Image& img) {
     const auto* p = img.rgb.data() + row * static_cast<size_t>(y);
     raw.insert(raw.end(), p, p + row);
   }
-  // zlib: header (deflate, 32K window, no dictionary, check bits), stored blocks, Adler-32.
-  std::vector<std::uint8_t> z;
-  z.reserve(raw.size() + raw.size() / kMaxStored * 5 + 16);
-  z.push_back(0x78);
-  z.push_back(0x01);
-  size_t at = 0;
-  do {
-    const size_t n = std::min(kMaxStored, raw.size() - at);
-    const bool last = at + n == raw.size();
-    z.push_back(last ? 1 : 0);  // BFINAL, BTYPE 00
-    z.push_back(static_cast<std::uint8_t>(n & 0xFF));
-    z.push_back(static_cast<std::uint8_t>(n >> 8));
-    z.push_back(static_cast<std::uint8_t>(~n & 0xFF));
-    z.push_back(static_cast<std::uint8_t>((~n >> 8) & 0xFF));
-    z.insert(z.end(), raw.begin() + static_cast<std::ptrdiff_t>(at), raw.begin() + static_cast<std::ptrdiff_t>(at + n));
-    at += n;
-  } while (at < raw.size());
-  put32(z, adler32(raw.data(), raw.size()));
+  std::vector<std::uint8_t> z(::compressBound(static_cast<uLong>(raw.size())));
+  uLongf zn = static_cast<uLongf>(z.size());
+  if (::compress2(z.data(), &zn, raw.data(), static_cast<uLong>(raw.size()), kLevel) != Z_OK) {
+    throw PngError("zlib could not compress the image");
+  }
 
   std::vector<std::uint8_t> out(kSignature, kSignature + 8);
+  out.reserve(zn + 64);
   std::vector<std::uint8_t> ihdr;
   put32(ihdr, static_cast<std::uint32_t>(img.width));
   put32(ihdr, static_cast<std::uint32_t>(img.height));
   ihdr.insert(ihdr.end(), {8, 2, 0, 0, 0});  // 8 bits, truecolour, deflate, filter 0, no interlace
-  chunk(out, "IHDR", ihdr);
-  chunk(out, "IDAT", z);
-  chunk(out, "IEND", {});
+  chunk(out, "IHDR", ihdr.data(), ihdr.size());
+  chunk(out, "IDAT", z.data(), zn);
+  chunk(out, "IEND", nullptr, 0);
   return out;
 }
 
 Image decode_png(const std::vector<std::uint8_t>& bytes) {
   if (bytes.size() < 8 || std::memcmp(bytes.data(), kSignature, 8) != 0) throw PngError("not a PNG file");
   size_t at = 8;
-  int w = 0, h = 0;
-  std::vector<std::uint8_t> z;
+  int w = 0, h = 0, colour = -1;
+  std::vector<std::uint8_t> z, palette;
   bool end = false;
   while (!end) {
     if (at + 12 > bytes.size()) throw PngError("truncated PNG chunk");
     const std::uint32_t len = get32(&bytes[at]);
-    if (at + 12 + len > bytes.size()) throw PngError("truncated PNG chunk");
+    if (len > bytes.size() - at - 12) throw PngError("truncated PNG chunk");
     const std::uint8_t* type = &bytes[at + 4];
     const std::uint8_t* data = &bytes[at + 8];
-    if (crc32(type, len + 4) != get32(data + len)) throw PngError("PNG chunk CRC mismatch");
+    if (crc(type, len + 4) != get32(data + len)) throw PngError("PNG chunk CRC mismatch");
     const std::string name(reinterpret_cast<const char*>(type), 4);
     if (name == "IHDR") {
       if (len != 13) throw PngError("bad IHDR");
       w = static_cast<int>(get32(data));
       h = static_cast<int>(get32(data + 4));
-      if (data[8] != 8 || data[9] != 2 || data[10] != 0 || data[11] != 0 || data[12] != 0) {
-        throw PngError("only 8-bit RGB, non-interlaced PNGs are read");
-      }
+      colour = data[9];
+      if (data[8] != 8) throw PngError("only 8-bit PNGs are read (this one has " + std::to_string(data[8]) + " bits)");
+      if (data[10] != 0 || data[11] != 0) throw PngError("unknown compression or filter method");
+      if (data[12] != 0) throw PngError("interlaced PNGs are not read");
+    } else if (name == "PLTE") {
+      palette.assign(data, data + len);
     } else if (name == "IDAT") {
       z.insert(z.end(), data, data + len);
     } else if (name == "IEND") {
       end = true;
+    } else if ((type[0] & 0x20) == 0) {
+      throw PngError("unknown critical chunk " + name);
     }
     at += 12 + len;
   }
   if (w <= 0 || h <= 0 || w > 1 << 15 || h > 1 << 15) throw PngError("bad PNG size");
-  // zlib with stored blocks only.
-  if (z.size() < 6 || (z[0] & 0x0F) != 8 || ((z[0] << 8) | z[1]) % 31 != 0) throw PngError("bad zlib header");
-  std::vector<std::uint8_t> raw;
-  size_t p = 2;
-  bool last = false;
-  while (!last) {
-    if (p + 5 > z.size()) throw PngError("truncated deflate data");
-    if ((z[p] & 0x06) != 0) throw PngError("compressed deflate blocks are not read (stored blocks only)");
-    last = z[p] & 1;
-    const size_t n = z[p + 1] | (z[p + 2] << 8);
-    const size_t nn = z[p + 3] | (z[p + 4] << 8);
-    if ((n ^ nn) != 0xFFFF) throw PngError("bad stored block length");
-    p += 5;
-    if (p + n > z.size()) throw PngError("truncated deflate data");
-    raw.insert(raw.end(), z.begin() + static_cast<std::ptrdiff_t>(p), z.begin() + static_cast<std::ptrdiff_t>(p + n));
-    p += n;
+  size_t bpp = 0;  // bytes per pixel
+  switch (colour) {
+    case 0: case 3: bpp = 1; break;
+    case 2: bpp = 3; break;
+    case 4: bpp = 2; break;
+    case 6: bpp = 4; break;
+    default: throw PngError("unknown colour type " + std::to_string(colour));
   }
-  if (p + 4 > z.size() || get32(&z[p]) != adler32(raw.data(), raw.size())) throw PngError("Adler-32 mismatch");
-  const size_t row = static_cast<size_t>(w) * 3;
-  if (raw.size() != (row + 1) * static_cast<size_t>(h)) throw PngError("wrong amount of image data");
+  if (colour == 3 && (palette.empty() || palette.size() % 3 != 0)) throw PngError("palette PNG without a PLTE chunk");
+  const size_t row = static_cast<size_t>(w) * bpp;
+  std::vector<std::uint8_t> raw = inflate_all(z, (row + 1) * static_cast<size_t>(h));
+  unfilter(raw, row, h, bpp);
   Image img(w, h);
   for (int y = 0; y < h; ++y) {
-    const std::uint8_t* src = &raw[(row + 1) * static_cast<size_t>(y)];
-    if (src[0] != 0) throw PngError("only filter type 0 is read");
-    std::memcpy(&img.rgb[row * static_cast<size_t>(y)], src + 1, row);
+    const std::uint8_t* src = &raw[(row + 1) * static_cast<size_t>(y) + 1];
+    std::uint8_t* dst = &img.rgb[static_cast<size_t>(w) * 3 * static_cast<size_t>(y)];
+    for (int x = 0; x < w; ++x, src += bpp, dst += 3) {
+      if (colour == 3) {
+        if (size_t{src[0]} * 3 + 3 > palette.size()) throw PngError("palette index out of range");
+        std::memcpy(dst, &palette[size_t{src[0]} * 3], 3);
+      } else if (colour == 0 || colour == 4) {
+        dst[0] = dst[1] = dst[2] = src[0];
+      } else {
+        std::memcpy(dst, src, 3);
+      }
+    }
   }
   return img;
 }

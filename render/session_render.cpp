@@ -66,6 +66,7 @@ class FrameObserver : public Observer {
     tile_opt_.height = kTileW * o.height / o.width;
   }
   static constexpr int kTileW = 320;
+  int total_frames_ = 0;  // frames the whole session will have, for progress
 
   // The state before the first frame has no hand yet: the pictures start
   // with the first frame (frame_00000 is its picture).
@@ -122,6 +123,7 @@ class FrameObserver : public Observer {
     result_->files.push_back(path);
     ++result_->frames;
     ++next_frame_;
+    if (o_.progress) o_.progress(result_->frames, total_frames_);
   }
 
   void moment(const Model& m, const State& s, const std::string& what) {
@@ -288,6 +290,7 @@ RenderSessionResult render_session(const CompiledSession& session, const RenderS
     FrameObserver frames(o, camera, camera, ground_z, per_newton, &result);
     Observer* const obs[] = {&frames, &timeline};
     ScriptedAgent agent(session.script);
+    frames.total_frames_ = static_cast<int>(std::floor(agent.duration() * o.fps + 1e-9)) + 1;
     run_session(session.model, *session.rules, agent, obs);
   }
 

@@ -28,6 +28,9 @@ struct RenderSessionOptions {
   // Draws extra content (the guides) into each rendered picture, after
   // the scene: given the image, the camera and the state.
   std::function<void(Image&, const Camera&, const State&)> overlay;
+  // Called after each PNG frame is written with the frames done and the
+  // frames the session will have (for progress on a terminal).
+  std::function<void(int done, int total)> progress;
 };
 
 struct KeyMoment {

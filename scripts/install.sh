@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 packages=(
   build-essential cmake pkg-config ninja-build
   libeigen3-dev libfcl-dev libccd-dev libyaml-cpp-dev
-  libglm-dev libosmesa6-dev libusb-1.0-0-dev umockdev libumockdev-dev
+  libglm-dev libosmesa6-dev zlib1g-dev libusb-1.0-0-dev umockdev libumockdev-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev
 )
 missing=()

@@ -118,16 +118,8 @@ void expect_reference(const Image& img, const std::string& name) {
 
 // ---------------------------------------------------------------- PNG
 
-TEST(RenderPng, ChecksumsMatchTheirStandards) {
-  const std::string digits = "123456789";
-  const auto* p = reinterpret_cast<const std::uint8_t*>(digits.data());
-  EXPECT_EQ(render::crc32(p, digits.size()), 0xCBF43926u);
-  const std::string wiki = "Wikipedia";
-  EXPECT_EQ(render::adler32(reinterpret_cast<const std::uint8_t*>(wiki.data()), wiki.size()), 0x11E60398u);
-}
-
-TEST(RenderPng, RoundTripsAcrossManyStoredBlocks) {
-  Image img(301, 257);  // 301*3+1 bytes a row: several 64 KiB blocks, none aligned
+TEST(RenderPng, RoundTripsAnOddSize) {
+  Image img(301, 257);  // 301*3+1 bytes a row: rows not aligned to anything
   for (int y = 0; y < img.height; ++y) {
     for (int x = 0; x < img.width; ++x) {
       img.set(x, y, {static_cast<std::uint8_t>(x * 7 + y), static_cast<std::uint8_t>(y * 3),

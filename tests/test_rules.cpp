@@ -277,6 +277,18 @@ TEST_F(Tracing, ExplanationsGiveTheValuesThatMadeEachNodeTrue) {
   EXPECT_EQ(inferences(*rules_, *rule_state_)[0].nodes[1].text.substr(0, 22), "load(actee) = 312 N > ");
 }
 
+TEST_F(Tracing, ATrueComparisonNeverReadsFalseAfterRounding) {
+  use("functions:\n"
+      "  - {name: crash, description: d, nodes: [{when: load(actee) > limit(actee)}]}\n"
+      "  - {name: press, description: d, nodes: [{when: load(actee) > 300 N}]}\n");
+  state_->actee_load = 300.0004;  // the limit is 300 N: four digits would print "300 N > 300 N"
+  frame();
+  const std::vector<Inference> all = inferences(*rules_, *rule_state_);
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[0].nodes[0].text, "load(actee) = 300.0004 N > limit(actee) = 300 N");
+  EXPECT_EQ(all[1].nodes[0].text, "load(actee) = 300.0004 N > 300 N");
+}
+
 TEST(RuleVocabulary, EverySignalIsDocumented) {
   const std::vector<SignalDoc> docs = vocabulary();
   EXPECT_GE(docs.size(), 25u);

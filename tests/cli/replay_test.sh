@@ -34,6 +34,11 @@ grep -q "^replayed 4000 frames: events identical to the recording, and the final
 grep "^[a-z]* at [0-9.]* s$" log > replay_verdicts
 cmp -s run_verdicts replay_verdicts || fail "the replay's verdicts differ from the run's"
 
+# --out: the same timeline and trace, byte for byte, as the run wrote.
+"$afford" replay nut.afrec --out replayed > log 2>&1 || fail "replay --out failed"
+cmp -s out/trace.csv replayed/trace.csv || fail "replay --out: trace.csv differs from the run's"
+cmp -s out/timeline.jsonl replayed/timeline.jsonl || fail "replay --out: timeline.jsonl differs from the run's"
+
 "$afford" replay nut.afrec --json > log 2>&1 || fail "replay --json failed"
 grep -q '^{"recording":"nut.afrec","session":"paper-nutcracker","frames":4000,"tail":"end","changed_since":\["actees/walnut.yaml"\],"identical":true,"functions":\[{"name":"pinch"' log ||
   fail "replay --json"

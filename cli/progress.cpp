@@ -1,0 +1,34 @@
+#include "progress.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace afford::cli {
+
+namespace {
+constexpr std::chrono::milliseconds kEvery{100};  // redraws a second at most 10 times: the terminal is slow
+}
+
+TerminalProgress::TerminalProgress() : tty_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()), last_(start_) {}
+
+TerminalProgress::~TerminalProgress() {
+  if (shown_) std::fputs("\r\033[K", stderr);
+}
+
+void TerminalProgress::update(int done, int total) {
+  if (!tty_) return;
+  const Clock::time_point now = Clock::now();
+  if (shown_ && now - last_ < kEvery) return;  // the first frame shows at once
+  last_ = now;
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  const double rate = elapsed > 0 ? done / elapsed : 0;
+  total = std::max(total, done);
+  const double left = rate > 0 ? (total - done) / rate : 0;
+  std::fprintf(stderr, "\r\033[Kframe %d/%d, %.1f frames/s, %.1f s left", done, total, rate, left);
+  std::fflush(stderr);
+  shown_ = true;
+}
+
+}  // namespace afford::cli

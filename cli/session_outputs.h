@@ -1,0 +1,40 @@
+// The files every command that runs a session writes into its output
+// directory, the same for `run`, `replay` and `live`: DIR/timeline.jsonl
+// and DIR/trace.csv (formats in engine/trace.h and docs/trace-format.md).
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "trace.h"
+
+namespace afford::cli {
+
+// An output file, closed when it goes out of scope.
+struct OutFile {
+  explicit OutFile(const std::filesystem::path& path);  // throws std::runtime_error
+  ~OutFile();
+  OutFile(const OutFile&) = delete;
+  OutFile& operator=(const OutFile&) = delete;
+  std::FILE* file;
+};
+
+// DIR as given, or out/<session name> when none was.
+std::filesystem::path output_dir(const std::string& given, const std::string& session_name);
+
+class SessionOutputs {
+ public:
+  explicit SessionOutputs(const std::filesystem::path& dir);  // creates DIR; throws std::runtime_error
+  Observer* timeline() { return &timeline_writer_; }
+  Observer* trace() { return &trace_writer_; }
+  std::string written() const;  // "DIR/timeline.jsonl and DIR/trace.csv"
+
+ private:
+  std::filesystem::path dir_;
+  OutFile timeline_, trace_;
+  TimelineWriter timeline_writer_;
+  TraceWriter trace_writer_;
+};
+
+}  // namespace afford::cli
