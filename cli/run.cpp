@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "commands.h"
+#include "files.h"
 #include "recording.h"
 #include "run.h"
 #include "scripted_agent.h"
@@ -30,16 +31,8 @@ std::string number(double v) {
   return buf;
 }
 
-// An output file, closed when it goes out of scope.
-struct OutFile {
-  explicit OutFile(const fs::path& path) : file(std::fopen(path.c_str(), "w")) {
-    if (file == nullptr) throw std::runtime_error("cannot write " + path.string());
-  }
-  ~OutFile() { std::fclose(file); }
-  OutFile(const OutFile&) = delete;
-  OutFile& operator=(const OutFile&) = delete;
-  std::FILE* file;
-};
+// An output file whose writes are checked when it is closed.
+using OutFile = CheckedFile;
 
 void print_text(const CompiledSession& s, const RunResult& r, const fs::path& out) {
   std::cout << "session " << s.name << ": " << s.description << "\n";
@@ -80,8 +73,8 @@ void run_once(const CompiledSession& session, const std::string& out_dir, bool j
   RunResult result;
   std::int64_t recorded = -1;
   {
-    OutFile timeline(out / "timeline.jsonl");
-    OutFile trace(out / "trace.csv");
+    OutFile timeline((out / "timeline.jsonl").string());
+    OutFile trace((out / "trace.csv").string());
     TimelineWriter timeline_writer(timeline.file);
     TraceWriter trace_writer(trace.file);
     std::vector<Observer*> observers = {&timeline_writer, &trace_writer};
@@ -91,6 +84,8 @@ void run_once(const CompiledSession& session, const std::string& out_dir, bool j
     result = run_session(session.model, *session.rules, agent, observers);
     if (recorder && !recorder->error().empty()) throw std::runtime_error(recorder->error());
     if (recorder) recorded = recorder->frames();
+    timeline.close();  // a full disk: exit 1 naming the file, never "wrote"
+    trace.close();
   }
   if (json) {
     print_json(session, result);
