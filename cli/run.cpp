@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "commands.h"
+#include "files.h"
 #include "recording.h"
 #include "run.h"
 #include "scripted_agent.h"
@@ -76,6 +77,7 @@ void run_once(const CompiledSession& session, const std::string& out_dir, bool j
     result = run_session(session.model, *session.rules, agent, observers);
     if (recorder && !recorder->error().empty()) throw std::runtime_error(recorder->error());
     if (recorder) recorded = recorder->frames();
+    outputs.close();  // a full disk: exit 1 naming the file, never "wrote"
   }
   if (json) {
     print_json(session, result);

@@ -6,12 +6,6 @@ namespace afford::cli {
 
 namespace fs = std::filesystem;
 
-OutFile::OutFile(const fs::path& path) : file(std::fopen(path.c_str(), "w")) {
-  if (file == nullptr) throw std::runtime_error("cannot write " + path.string());
-}
-
-OutFile::~OutFile() { std::fclose(file); }
-
 fs::path output_dir(const std::string& given, const std::string& session_name) {
   return given.empty() ? fs::path("out") / session_name : fs::path(given);
 }
@@ -28,10 +22,15 @@ const fs::path& created(const fs::path& dir) {
 
 SessionOutputs::SessionOutputs(const fs::path& dir)
     : dir_(created(dir)),
-      timeline_(dir_ / "timeline.jsonl"),
-      trace_(dir_ / "trace.csv"),
+      timeline_((dir_ / "timeline.jsonl").string()),
+      trace_((dir_ / "trace.csv").string()),
       timeline_writer_(timeline_.file),
       trace_writer_(trace_.file) {}
+
+void SessionOutputs::close() {
+  timeline_.close();
+  trace_.close();
+}
 
 std::string SessionOutputs::written() const {
   return (dir_ / "timeline.jsonl").string() + " and " + (dir_ / "trace.csv").string();

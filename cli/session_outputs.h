@@ -7,18 +7,13 @@
 #include <filesystem>
 #include <string>
 
+#include "files.h"
 #include "trace.h"
 
 namespace afford::cli {
 
-// An output file, closed when it goes out of scope.
-struct OutFile {
-  explicit OutFile(const std::filesystem::path& path);  // throws std::runtime_error
-  ~OutFile();
-  OutFile(const OutFile&) = delete;
-  OutFile& operator=(const OutFile&) = delete;
-  std::FILE* file;
-};
+// An output file whose writes are checked when it is closed (engine/files.h).
+using OutFile = CheckedFile;
 
 // DIR as given, or out/<session name> when none was.
 std::filesystem::path output_dir(const std::string& given, const std::string& session_name);
@@ -29,6 +24,8 @@ class SessionOutputs {
   Observer* timeline() { return &timeline_writer_; }
   Observer* trace() { return &trace_writer_; }
   std::string written() const;  // "DIR/timeline.jsonl and DIR/trace.csv"
+  // Closes both, checked: a full disk is an error naming the file, never "wrote".
+  void close();
 
  private:
   std::filesystem::path dir_;

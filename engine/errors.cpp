@@ -11,6 +11,13 @@ DataError::DataError(SourceLoc loc, const std::string& message)
       loc_(std::move(loc)),
       message_(message) {}
 
+std::string shorten(const std::string& value) {
+  if (value.size() <= kMaxQuoted) return "'" + value + "'";
+  size_t cut = kMaxQuoted;  // not inside a UTF-8 sequence
+  while (cut > 0 && (static_cast<unsigned char>(value[cut]) & 0xC0) == 0x80) --cut;
+  return "'" + value.substr(0, cut) + "\u2026' (" + std::to_string(value.size()) + " characters)";
+}
+
 void fail(const SourceLoc& loc, const std::string& expected,
           const std::string& found) {
   throw DataError(loc, "expected " + expected + ", found " + found);

@@ -31,6 +31,12 @@ class DataError : public std::runtime_error {
 [[noreturn]] void fail(const SourceLoc& loc, const std::string& expected,
                        const std::string& found);
 
+// A value quoted in an error: 'abc', or, past kMaxQuoted characters, its
+// start and its length ('vvvv…' (1048576 characters)), so that one bad
+// value does not flood the terminal.
+inline constexpr size_t kMaxQuoted = 60;
+std::string shorten(const std::string& value);
+
 class LogicError : public std::logic_error {
  public:
   using std::logic_error::logic_error;

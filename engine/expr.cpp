@@ -22,6 +22,7 @@ class Parser {
   }
 
   ExprTree parse() {
+    tree_.source = text_;
     tree_.root = parse_or();
     if (peek().kind != Tok::end) fail_at(peek(), "an operator or the end of the expression");
     return std::move(tree_);
@@ -117,14 +118,15 @@ class Parser {
     fail(loc_of(t.pos), expected, found);
   }
 
-  std::string slice(size_t from, size_t to) const {
+  void set_span(ExprNode& n, size_t from, size_t to) const {
     while (to > from && std::isspace(static_cast<unsigned char>(text_[to - 1]))) --to;
-    return text_.substr(from, to - from);
+    n.begin = from;
+    n.end = to;
   }
 
   int add(ExprNode n, size_t from, size_t to) {
     n.loc = loc_of(from);
-    n.text = slice(from, to);
+    set_span(n, from, to);
     tree_.nodes.push_back(std::move(n));
     return static_cast<int>(tree_.nodes.size()) - 1;
   }
@@ -153,16 +155,22 @@ class Parser {
     return lhs;
   }
 
-  int parse_not() {
-    const size_t from = here();
-    if (take_word("not")) {
+  // "not not ... x": a loop, not a recursion, however many there are.
+  int parse_not() { return prefixed("not", [this] { return take_word("not"); }, &Parser::parse_comparison); }
+
+  template <class Take>
+  int prefixed(const char* op, Take take_prefix, int (Parser::*operand)()) {
+    std::vector<size_t> starts;
+    for (size_t from = here(); take_prefix(); from = here()) starts.push_back(from);
+    int inner = (this->*operand)();
+    for (size_t i = starts.size(); i-- > 0;) {
       ExprNode n;
       n.kind = ExprKind::unary;
-      n.op = "not";
-      n.children = {parse_not()};
-      return add(std::move(n), from, here());
+      n.op = op;
+      n.children = {inner};
+      inner = add(std::move(n), starts[i], here());
     }
-    return parse_comparison();
+    return inner;
   }
 
   int parse_comparison() {
@@ -200,17 +208,7 @@ class Parser {
     return lhs;
   }
 
-  int parse_unary() {
-    const size_t from = here();
-    if (take_op("-")) {
-      ExprNode n;
-      n.kind = ExprKind::unary;
-      n.op = "-";
-      n.children = {parse_unary()};
-      return add(std::move(n), from, here());
-    }
-    return parse_atom();
-  }
+  int parse_unary() { return prefixed("-", [this] { return take_op("-"); }, &Parser::parse_atom); }
 
   // A unit after a number binds to it: "5 cm", "0.3 N*m/rad".
   std::optional<std::string> unit_after_number() {
@@ -256,13 +254,18 @@ class Parser {
       return add(std::move(n), from, here());
     }
     if (t.kind == Tok::lparen) {
+      if (depth_ == kMaxExprNesting) {
+        fail_at(t, "at most " + std::to_string(kMaxExprNesting) + " levels of parentheses");
+      }
       take();
+      ++depth_;
       const int inner = parse_or();
+      --depth_;
       if (peek().kind != Tok::rparen) fail_at(peek(), "')'");
       take();
       // Keep the parentheses in the text for explanations.
       ExprNode& n = tree_.nodes[static_cast<size_t>(inner)];
-      n.text = slice(from, here());
+      set_span(n, from, here());
       n.loc = loc_of(from);
       return inner;
     }
@@ -313,6 +316,7 @@ class Parser {
   int offset_;
   std::vector<Token> tokens_;
   size_t next_ = 0;
+  int depth_ = 0;  // parentheses open around the current token
   ExprTree tree_;
 };
 

@@ -29,11 +29,14 @@ class Compiler {
     node.tree_slot.assign(n, -1);
     node.tree_dimension.assign(n, dim::none);
     node.tree_boolean.assign(n, false);
-    const Type t = visit(node, node.tree.root);
+    // Children come before their parents: one pass in index order, no
+    // recursion, linear in the length of the expression.
+    for (size_t i = 0; i < n; ++i) visit(node, static_cast<int>(i));
+    const Type t = type_of(node, node.tree.root);
     if (!t.boolean) {
       const ExprNode& root = node.tree.nodes[static_cast<size_t>(node.tree.root)];
       fail(root.loc, "a condition (a comparison, or a signal that is true or false)",
-           "'" + root.text + "', " + describe_type(t));
+           shorten(node.tree.text(root)) + ", " + describe_type(t));
     }
     return node.tree_slot[static_cast<size_t>(node.tree.root)];
   }
@@ -51,6 +54,14 @@ class Compiler {
     return slot;
   }
 
+  // The type of a node already visited.
+  static Type type_of(const RuleNode& node, int index) {
+    Type t;
+    t.boolean = node.tree_boolean[static_cast<size_t>(index)];
+    t.dimension = node.tree_dimension[static_cast<size_t>(index)];
+    return t;
+  }
+
   Type visit(RuleNode& node, int index) {
     const ExprNode& e = node.tree.nodes[static_cast<size_t>(index)];
     Type t;
@@ -65,14 +76,14 @@ class Compiler {
         slot = emit({Op::constant, -1, -1, e.value, nullptr});
         break;
       case ExprKind::call: {
-        const Signal* s = resolve(e);
+        const Signal* s = resolve(e, node.tree.text(e));
         t.boolean = s->boolean;
         t.dimension = s->dimension;
         slot = emit({Op::signal, -1, -1, 0, s});
         break;
       }
       case ExprKind::unary: {
-        const Type inner = visit(node, e.children[0]);
+        const Type inner = type_of(node, e.children[0]);
         const int a = node.tree_slot[static_cast<size_t>(e.children[0])];
         if (e.op == "not") {
           if (!inner.boolean) operand_error(node, e.children[0], "a condition after 'not'");
@@ -96,8 +107,8 @@ class Compiler {
   }
 
   std::pair<Type, int> binary(RuleNode& node, const ExprNode& e) {
-    const Type l = visit(node, e.children[0]);
-    const Type r = visit(node, e.children[1]);
+    const Type l = type_of(node, e.children[0]);
+    const Type r = type_of(node, e.children[1]);
     const int a = node.tree_slot[static_cast<size_t>(e.children[0])];
     const int b = node.tree_slot[static_cast<size_t>(e.children[1])];
     const std::string& op = e.op;
@@ -121,8 +132,8 @@ class Compiler {
       if (!(l.dimension == r.dimension)) {
         const ExprNode& rhs = node.tree.nodes[static_cast<size_t>(e.children[1])];
         const ExprNode& lhs = node.tree.nodes[static_cast<size_t>(e.children[0])];
-        fail(rhs.loc, describe_type(l) + " to go with '" + lhs.text + "'",
-             "'" + rhs.text + "', " + describe_type(r));
+        fail(rhs.loc, describe_type(l) + " to go with " + shorten(node.tree.text(lhs)),
+             shorten(node.tree.text(rhs)) + ", " + describe_type(r));
       }
       t.dimension = l.dimension;
       t.boolean = code != Op::add && code != Op::sub;
@@ -133,15 +144,15 @@ class Compiler {
 
   [[noreturn]] void operand_error(const RuleNode& node, int index, const std::string& expected) {
     const ExprNode& e = node.tree.nodes[static_cast<size_t>(index)];
-    fail(e.loc, expected, "'" + e.text + "'");
+    fail(e.loc, expected, shorten(node.tree.text(e)));
   }
 
-  const Signal* resolve(const ExprNode& e) {
+  const Signal* resolve(const ExprNode& e, const std::string& text) {
     std::vector<Entity> args;
     for (const std::string& a : e.args) {
       Entity entity;
       if (!parse_entity(a, &entity)) {
-        fail(e.loc, "arguments among agent, object and actee in '" + e.text + "'",
+        fail(e.loc, "arguments among agent, object and actee in " + shorten(text),
              "'" + a + "'" + did_you_mean(a, {"agent", "object", "actee"}));
       }
       args.push_back(entity);
@@ -155,7 +166,7 @@ class Compiler {
       const std::string hint = did_you_mean(e.op, signal_names());
       fail(e.loc, "a signal of the vocabulary (afford rules --list)", "'" + e.op + "'" + hint);
     }
-    fail(e.loc, "one of " + forms, "'" + e.text + "'");
+    fail(e.loc, "one of " + forms, shorten(text));
   }
 
   RuleSet& rules_;

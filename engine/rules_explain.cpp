@@ -29,16 +29,26 @@ class Writer {
   Writer(const RuleNode& node, const double* values) : node_(node), values_(values) {}
 
   std::string write(int index) const {
-    const ExprNode& e = node_.tree.nodes[static_cast<size_t>(index)];
-    if (e.kind == ExprKind::binary && (e.op == "and" || e.op == "or")) {
-      return write(e.children[0]) + " " + e.op + " " + write(e.children[1]);
+    // A chain "a and b and c" is a left-deep tree and "not not x" a deep
+    // one: walk both spines in a loop, so that a long chain does not recurse.
+    std::string nots;
+    size_t closing = 0;
+    while (is_not(index)) {
+      nots += "not (";
+      ++closing;
+      index = node(index).children[0];
     }
-    if (e.kind == ExprKind::binary && is_comparison(e.op)) {
-      const int digits = digits_for(index, e);
-      return operand(e.children[0], digits) + " " + e.op + " " + operand(e.children[1], digits);
+    std::vector<int> spine;  // the logical operators down the left side
+    while (is_logical(index)) {
+      spine.push_back(index);
+      index = node(index).children[0];
     }
-    if (e.kind == ExprKind::unary && e.op == "not") return "not (" + write(e.children[0]) + ")";
-    return operand(index);
+    std::string s = nots + leaf(index);
+    for (size_t i = spine.size(); i-- > 0;) {
+      const ExprNode& e = node(spine[i]);
+      s += " " + e.op + " " + write(e.children[1]);
+    }
+    return s + std::string(closing, ')');
   }
 
  private:
@@ -54,13 +64,32 @@ class Writer {
     return digits;
   }
 
+  const ExprNode& node(int index) const { return node_.tree.nodes[static_cast<size_t>(index)]; }
+  bool is_not(int index) const { return node(index).kind == ExprKind::unary && node(index).op == "not"; }
+  bool is_logical(int index) const {
+    const ExprNode& e = node(index);
+    return e.kind == ExprKind::binary && (e.op == "and" || e.op == "or");
+  }
+
+  // Neither a 'not' nor 'and'/'or'.
+  std::string leaf(int index) const {
+    const ExprNode& e = node(index);
+    if (is_not(index)) return write(index);  // "(not a) and b"
+    if (e.kind == ExprKind::binary && is_comparison(e.op)) {
+      const int digits = digits_for(index, e);
+      return operand(e.children[0], digits) + " " + e.op + " " + operand(e.children[1], digits);
+    }
+    return operand(index);
+  }
+
   // A literal reads as written; anything else gets its value.
   std::string operand(int index, int digits = kDigits) const {
     const ExprNode& e = node_.tree.nodes[static_cast<size_t>(index)];
-    if (e.kind == ExprKind::number || e.kind == ExprKind::boolean) return e.text;
+    const std::string text = node_.tree.text(e);
+    if (e.kind == ExprKind::number || e.kind == ExprKind::boolean) return text;
     const size_t i = static_cast<size_t>(index);
-    if (node_.tree_boolean[i] && values_[i] != 0) return e.text;  // a condition that held
-    return e.text + " = " + shown(index, digits);
+    if (node_.tree_boolean[i] && values_[i] != 0) return text;  // a condition that held
+    return text + " = " + shown(index, digits);
   }
 
   const RuleNode& node_;

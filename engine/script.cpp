@@ -211,6 +211,13 @@ ScriptSpec read_script(const Node& sequence) {
     fail(spec.keyframes.back().t_loc, "a last keyframe after 0 s (the script's duration)",
          format_quantity(spec.keyframes.back().t, dim::time));
   }
+  // A session runs its script's duration: bounded, so that a typo cannot
+  // run for ever and fill the disk with trace.csv.
+  if (spec.keyframes.back().t > kMaxScriptDuration) {
+    fail(spec.keyframes.back().t_loc,
+         "a last keyframe at most " + format_quantity(kMaxScriptDuration, dim::time) + " (the script's duration)",
+         format_quantity(spec.keyframes.back().t, dim::time));
+  }
   return spec;
 }
 

@@ -128,6 +128,9 @@ struct ScriptSpec {
   std::vector<KeyframeSpec> keyframes;
 };
 
+// The longest script (s): a session longer than this is a mistake.
+inline constexpr double kMaxScriptDuration = 600;
+
 // Reads a `script:` sequence of keyframes. Throws DataError at the value
 // that is wrong (an unknown key, a missing first-keyframe key, a time not
 // after the one before, a negative squeeze, ...).

@@ -14,6 +14,7 @@ namespace {
 
 constexpr double kDefaultTimestep = 1e-3;          // s
 constexpr double kDefaultContactTolerance = 5e-4;  // m
+constexpr double kMinTimestep = 1e-5;              // s: finer only fills the disk
 constexpr double kMaxTimestep = 0.1;               // s: coarser is no simulation of a hand
 
 // `camera: {position, target, up?, fov?}`: eye and target apart, up not
@@ -61,7 +62,10 @@ CompiledSession read_session(const Node& root) {
   options.contact_tolerance = kDefaultContactTolerance;
   if (std::optional<Node> dt = m.optional("timestep")) {
     options.timestep = read_positive(*dt, dim::time);
-    if (options.timestep > kMaxTimestep) dt->fail("a timestep of at most " + format_quantity(kMaxTimestep, dim::time));
+    if (options.timestep > kMaxTimestep || options.timestep < kMinTimestep) {
+      dt->fail("a timestep from " + format_quantity(kMinTimestep, dim::time) + " to " +
+               format_quantity(kMaxTimestep, dim::time));
+    }
   }
   if (std::optional<Node> tol = m.optional("contact_tolerance")) {
     options.contact_tolerance = read_positive(*tol, dim::length);

@@ -16,20 +16,117 @@ SourceLoc loc_of(const YAML::Mark& mark, const std::string& file) {
   return SourceLoc{file, mark.line + 1, mark.column + 1};
 }
 
+// Where the second document of a file starts: the first "---" line after
+// some content (a "---" before any content only opens the first document).
+// line 0 when there is none.
+SourceLoc second_document(const std::string& text, const std::string& name) {
+  bool content = false;
+  int line = 1;
+  for (size_t at = 0; at < text.size(); ++line) {
+    size_t end = text.find('\n', at);
+    if (end == std::string::npos) end = text.size();
+    const std::string_view l(text.data() + at, end - at);
+    const bool marker = l.substr(0, 3) == "---" && (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r');
+    if (marker && content) return SourceLoc{name, line, 1};
+    const size_t first = l.find_first_not_of(" \t\r");
+    if (!marker && first != std::string_view::npos && l[first] != '#' && l[first] != '%') content = true;
+    at = end + 1;
+  }
+  return SourceLoc{name, 0, 0};
+}
+
+// Nesting and size limits, checked without recursion so that a deep file
+// cannot overflow the stack here either.
+void check_shape(const YAML::Node& root, const std::string& name) {
+  std::vector<std::pair<YAML::Node, int>> todo{{root, 1}};
+  size_t count = 0;
+  while (!todo.empty()) {
+    auto [node, depth] = todo.back();
+    todo.pop_back();
+    if (++count > kMaxYamlNodes) {
+      fail(loc_of(node.Mark(), name), "at most " + std::to_string(kMaxYamlNodes) + " values in a file",
+           "more");
+    }
+    if (depth > kMaxYamlDepth) {
+      fail(loc_of(node.Mark(), name), "at most " + std::to_string(kMaxYamlDepth) + " levels of nesting",
+           "a value nested deeper");
+    }
+    // Children pushed last first, so that they are visited in file order and
+    // the error names the first value past the limit. (Never assign or swap
+    // YAML::Nodes: assignment writes into the tree.)
+    std::vector<YAML::Node> children;
+    if (node.IsMap()) {
+      for (auto it = node.begin(); it != node.end(); ++it) {
+        children.push_back(it->first);
+        children.push_back(it->second);
+      }
+    } else if (node.IsSequence()) {
+      for (auto it = node.begin(); it != node.end(); ++it) children.push_back(*it);
+    }
+    for (size_t i = children.size(); i-- > 0;) todo.emplace_back(children[i], depth + 1);
+  }
+}
+
 Node parse(const std::string& text, const std::string& name) {
   auto file = std::make_shared<const std::string>(name);
+  if (text.size() > kMaxYamlBytes) {
+    fail(SourceLoc{name, 1, 1}, "a file of at most " + std::to_string(kMaxYamlBytes) + " bytes",
+         std::to_string(text.size()) + " bytes");
+  }
+  // Before parsing: a broken second document must not hide behind its own
+  // syntax error.
+  if (const SourceLoc second = second_document(text, name); second.line > 0) {
+    fail(second, "one YAML document per file", "a second document ('---')");
+  }
   try {
-    YAML::Node root = YAML::Load(text);
+    const std::vector<YAML::Node> docs = YAML::LoadAll(text);
+    if (docs.size() > 1) {
+      fail(loc_of(docs[1].Mark(), name), "one YAML document per file", "a second document");
+    }
+    const YAML::Node root = docs.empty() ? YAML::Node() : docs[0];
     if (!root.IsDefined() || root.IsNull()) {
       throw DataError(SourceLoc{name, 1, 1}, "expected a YAML mapping, found an empty file");
     }
+    check_shape(root, name);
     return Node(root, file);
   } catch (const YAML::ParserException& e) {
     throw DataError(loc_of(e.mark, name), "expected valid YAML, found a syntax error: " + e.msg);
   }
 }
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+std::string quoted(const std::string& s) { return shorten(s); }
+
+// Physically meaningful magnitudes for a hand, a hand tool and what it
+// acts on: larger (or, for a value that must be positive, smaller) is a
+// typing mistake, and would run to inf in the solver.
+struct Bounds {
+  Dimension dimension;
+  double smallest;  // least positive value
+  double largest;   // largest magnitude
+};
+constexpr Bounds kBounds[] = {
+    {dim::length, 1e-6, 10},              // 1 µm .. 10 m
+    {dim::mass, 1e-6, 1e3},               // 1 mg .. 1 t
+    {dim::time, 1e-9, 3600},              // 1 ns .. 1 h
+    {dim::angle, 1e-9, 1e3},              // rad
+    {dim::force, 1e-6, 1e5},              // N
+    {dim::stiffness, 1e-3, 1e9},          // N/m
+    {dim::cubic_stiffness, 1e-3, 1e15},   // N/m^3
+    {dim::torque, 1e-9, 1e4},             // N*m
+    {dim::rotational_damping, 1e-9, 1e3}, // N*m*s/rad
+    {dim::inertia, 1e-12, 10},            // kg*m^2
+    {dim::speed, 1e-9, 100},              // m/s
+    {dim::angular_speed, 1e-9, 1e4},      // rad/s
+};
+
+const Bounds* bounds_of(const Dimension& d) {
+  for (const Bounds& b : kBounds) {
+    if (b.dimension == d) return &b;
+  }
+  return nullptr;
+}
+
+const char* const kWhy = " (the range that makes sense for a hand tool)";
 
 }  // namespace
 
@@ -59,17 +156,7 @@ void Node::fail(const std::string& expected, const std::string& found) const {
   afford::fail(loc(), expected, found);
 }
 
-Node load_yaml_file(const std::string& path) {
-  std::error_code ec;  // a directory opens, then reads as an empty file
-  if (std::filesystem::is_directory(path, ec)) {
-    throw DataError(SourceLoc{path, 0, 0}, "expected a readable file, found a directory");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw DataError(SourceLoc{path, 0, 0}, "expected a readable file, found none");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse(text.str(), path);
-}
+Node load_yaml_file(const std::string& path) { return parse(read_regular_file(path, kMaxYamlBytes), path); }
 
 Node load_yaml_string(const std::string& text, const std::string& name) { return parse(text, name); }
 
@@ -90,7 +177,7 @@ MapReader::MapReader(const Node& node, std::string what, std::vector<std::string
     if (!known) {
       std::string expected = "one of the keys of " + what_ + " (";
       for (size_t i = 0; i < keys_.size(); ++i) expected += (i ? ", " : "") + keys_[i];
-      key.fail(expected + ")", "'" + name + "'" + did_you_mean(name, keys_));
+      key.fail(expected + ")", shorten(name) + did_you_mean(name, keys_));
     }
   }
 }
@@ -176,6 +263,9 @@ double read_quantity(const Node& node, const Dimension& expected) {
     node.fail(describe_dimension(expected), "'" + node.yaml().Scalar() + "', " + found_dim);
   }
   if (!std::isfinite(q->si)) node.fail("a finite value");
+  if (const Bounds* b = bounds_of(expected); b && std::abs(q->si) > b->largest) {
+    node.fail(describe_dimension(expected) + " of at most " + format_quantity(b->largest, expected) + " in size" + kWhy);
+  }
   return q->si;
 }
 
@@ -200,7 +290,7 @@ std::string read_choice(const Node& node, std::initializer_list<const char*> cho
   }
   std::string expected = "one of ";
   for (size_t i = 0; i < names.size(); ++i) expected += (i ? ", " : "") + names[i];
-  node.fail(expected, "'" + s + "'" + did_you_mean(s, names));
+  node.fail(expected, shorten(s) + did_you_mean(s, names));
 }
 
 double require_positive(const Node& node, double value) {
@@ -208,12 +298,21 @@ double require_positive(const Node& node, double value) {
   return value;
 }
 
+double require_at_least_smallest(const Node& node, const Dimension& expected, double value) {
+  if (const Bounds* b = bounds_of(expected); b && value > 0 && value < b->smallest) {
+    node.fail(describe_dimension(expected) + " of at least " + format_quantity(b->smallest, expected) + kWhy);
+  }
+  return value;
+}
+
 double read_positive(const Node& node, const Dimension& expected) {
-  return require_positive(node, read_quantity(node, expected));
+  const double v = require_positive(node, read_quantity(node, expected));
+  return require_at_least_smallest(node, expected, v);
 }
 
 double read_non_negative(const Node& node, const Dimension& expected) {
-  return require_non_negative(node, read_quantity(node, expected));
+  const double v = require_non_negative(node, read_quantity(node, expected));
+  return require_at_least_smallest(node, expected, v);
 }
 
 double require_non_negative(const Node& node, double value) {

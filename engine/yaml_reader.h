@@ -13,6 +13,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "errors.h"
+#include "files.h"
 #include "units.h"
 
 namespace afford {
@@ -40,6 +41,12 @@ class Node {
   YAML::Node node_;
   std::shared_ptr<const std::string> file_;
 };
+
+// Limits on a YAML file (documented in the folder READMEs): its size, how
+// many values it holds and how deeply they nest. One document per file.
+inline constexpr size_t kMaxYamlBytes = size_t{1} << 20;
+inline constexpr size_t kMaxYamlNodes = 20000;
+inline constexpr int kMaxYamlDepth = 32;
 
 // Loads a YAML file; syntax errors become DataErrors with the parser's mark.
 Node load_yaml_file(const std::string& path);
@@ -81,11 +88,20 @@ Eigen::Vector3d read_plain_vector(const Node& node);  // three bare numbers
 // One of `choices`, with "did you mean" on a miss.
 std::string read_choice(const Node& node, std::initializer_list<const char*> choices);
 
+// Every quantity read is within the physical bounds of its dimension (a
+// length of at most 10 m, a force of at most 100 kN, ...; the table is in
+// yaml_reader.cpp and the folder READMEs), and a positive one at least the
+// smallest meaningful value. Readers of new parameters (effects, ...) get
+// both by calling read_positive or read_non_negative with the dimension.
+//
 // Range checks that report at the node's location.
 double require_positive(const Node& node, double value);
 double require_non_negative(const Node& node, double value);
 // A quantity that must be > 0 (or >= 0), SI.
 double read_positive(const Node& node, const Dimension& expected);
+// A value already read that must be zero or at least its dimension's
+// smallest meaningful value (5e-324 N/m is a mistake, not a spring).
+double require_at_least_smallest(const Node& node, const Dimension& expected, double value);
 double read_non_negative(const Node& node, const Dimension& expected);
 
 }  // namespace afford

@@ -1,0 +1,81 @@
+#include "files.h"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+namespace afford {
+namespace {
+
+std::string kind_of(mode_t mode) {
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+}  // namespace
+
+std::string read_regular_file(const std::string& path, size_t max_bytes) {
+  const SourceLoc at{path, 0, 0};
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) fail(at, "a readable file", "none");
+  if (S_ISDIR(st.st_mode)) fail(at, "a readable file", "a directory");
+  // Checked before opening: opening a FIFO blocks, a device never ends.
+  if (!S_ISREG(st.st_mode)) fail(at, "a regular file", kind_of(st.st_mode));
+  if (static_cast<unsigned long long>(st.st_size) > max_bytes) {
+    fail(at, "a file of at most " + std::to_string(max_bytes) + " bytes",
+         std::to_string(st.st_size) + " bytes");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(at, "a readable file", std::strerror(errno));
+  // Read no more than the cap even if the file grows meanwhile.
+  std::string text(max_bytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad()) fail(at, "a readable file", std::strerror(errno));
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (text.size() > max_bytes) {
+    fail(at, "a file of at most " + std::to_string(max_bytes) + " bytes", "a file still growing");
+  }
+  return text;
+}
+
+void check_written(bool ok, const std::string& path) {
+  if (ok) return;
+  const int e = errno;
+  throw WriteError("cannot write " + path + ": " + (e ? std::strerror(e) : "write failed"));
+}
+
+CheckedFile::CheckedFile(const std::string& path) : file(std::fopen(path.c_str(), "w")), path_(path) {
+  check_written(file != nullptr, path_);
+}
+
+CheckedFile::~CheckedFile() {
+  if (file != nullptr) std::fclose(file);
+}
+
+void CheckedFile::close() {
+  // errno is left as the failed buffered write set it (ENOSPC, EIO, ...).
+  const bool flushed = std::fflush(file) == 0 && !std::ferror(file);
+  const int flush_errno = errno;
+  const bool closed = std::fclose(file) == 0;
+  file = nullptr;
+  if (!flushed) errno = flush_errno;
+  check_written(flushed && closed, path_);
+}
+
+void write_file_checked(const std::string& path, const std::string& text) {
+  errno = 0;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  check_written(static_cast<bool>(out), path);
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.flush();
+  check_written(static_cast<bool>(out), path);
+  out.close();
+  check_written(!out.fail(), path);
+}
+
+}  // namespace afford

@@ -1,0 +1,51 @@
+// Files in and out, hardened: only regular files are read, with a size cap
+// (a FIFO, /dev/zero or /dev/urandom is an error at once, not a hang), and
+// every write is checked, so that a full disk or an unwritable folder is an
+// error naming the path and the reason, never a silent half-written file.
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "errors.h"
+
+namespace afford {
+
+// The whole of a regular file of at most max_bytes; a DataError at path:0:0
+// otherwise (missing, a directory, a FIFO or device, too large, unreadable).
+std::string read_regular_file(const std::string& path, size_t max_bytes);
+
+// A failed write: the path and the reason (strerror), for the command line
+// to print and exit 1.
+class WriteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws WriteError("cannot write PATH: REASON") when a stream (or a C
+// file's error flag / fclose) says a write failed. Call after the last write
+// and flush; errno names the reason.
+void check_written(bool ok, const std::string& path);
+
+// A C file opened for writing; close() checks every buffered write and the
+// close itself and throws WriteError naming the path and the reason. The
+// destructor closes without checking (an exception is already on its way).
+class CheckedFile {
+ public:
+  explicit CheckedFile(const std::string& path);
+  ~CheckedFile();
+  CheckedFile(const CheckedFile&) = delete;
+  CheckedFile& operator=(const CheckedFile&) = delete;
+  void close();
+  std::FILE* file;
+
+ private:
+  std::string path_;
+};
+
+// Writes `text` to `path` (replacing it), checked to the last byte.
+void write_file_checked(const std::string& path, const std::string& text);
+
+}  // namespace afford
