@@ -7,8 +7,6 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <unistd.h>
 #include <zlib.h>
@@ -51,12 +49,11 @@ bool is_under(const fs::path& p, const fs::path& folder) {
 }
 
 std::string read_file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path + " to record it");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw std::runtime_error("cannot read " + path + " to record it");
-  return s.str();
+  try {
+    return read_regular_file(path, kMaxYamlBytes);
+  } catch (const DataError& e) {
+    throw std::runtime_error("cannot read " + path + " to record it: " + e.message());
+  }
 }
 
 // Writes all n bytes, retrying short writes and EINTR. Returns errno or 0.

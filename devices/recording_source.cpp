@@ -181,14 +181,6 @@ void parse_header(const Record& r, Recording* rec) {
   }
 }
 
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // A fresh folder under $TMPDIR (or /tmp), removed with this object.
 struct TempFolder {
   TempFolder() {
@@ -301,7 +293,7 @@ Recording parse_recording(std::string_view bytes, const std::string& name) {
 Recording read_recording(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw std::runtime_error(path + ": a folder, not a recording");
-  return parse_recording(read_bytes(path), path);
+  return parse_recording(read_regular_file(path, kMaxRecordingBytes), path);
 }
 
 CompiledSession load_recorded_session(const Recording& rec) {
@@ -337,14 +329,12 @@ std::vector<std::string> changed_since_recording(const Recording& rec) {
   std::vector<std::string> out;
   for (const RecordedFile& f : rec.files) {
     const fs::path p = fs::path(rec.root) / f.path;
-    std::ifstream in(p, std::ios::binary);
-    if (!in) {
+    // Named by the recording: only a regular file there counts as unchanged.
+    try {
+      if (fnv1a64(read_regular_file(p.string(), kMaxYamlBytes)) != f.hash) out.push_back(f.path);
+    } catch (const DataError&) {
       out.push_back(f.path);
-      continue;
     }
-    std::ostringstream s;
-    s << in.rdbuf();
-    if (fnv1a64(s.str()) != f.hash) out.push_back(f.path);
   }
   return out;
 }

@@ -60,7 +60,10 @@ struct Recording {
 // is not a recording (wrong magic number), has another format version, or
 // whose header is incomplete or corrupt is an error naming the file
 // (std::runtime_error).
+// Only a regular file of at most kMaxRecordingBytes is read (a DataError at
+// path:0:0 otherwise).
 Recording read_recording(const std::string& path);
+inline constexpr size_t kMaxRecordingBytes = size_t{1} << 30;
 Recording parse_recording(std::string_view bytes, const std::string& name);
 
 // Loads the recorded session from the recorded copies of its files, not

@@ -16,6 +16,7 @@
 
 namespace afford {
 
+class Node;
 struct RuleSet;    // compiled, immutable; shared by sessions and threads
 struct RuleState;  // per session
 
@@ -23,6 +24,7 @@ struct RuleState;  // per session
 // Throws DataError naming file:line:col of the bad token.
 std::shared_ptr<const RuleSet> load_rules(const std::string& path);
 std::shared_ptr<const RuleSet> read_rules(const std::string& yaml_text, const std::string& name);
+std::shared_ptr<const RuleSet> read_rules(const Node& root);  // an already parsed document
 
 // RuleState is opaque outside the engine; this deleter lets callers own one.
 struct RuleStateDeleter {

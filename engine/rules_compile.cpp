@@ -287,6 +287,8 @@ std::shared_ptr<const RuleSet> read_rules(const std::string& yaml_text, const st
   return compile_rules(load_yaml_string(yaml_text, name));
 }
 
+std::shared_ptr<const RuleSet> read_rules(const Node& root) { return compile_rules(root); }
+
 std::vector<SignalDoc> vocabulary() {
   std::vector<SignalDoc> docs;
   for (const Signal& s : signal_registry()) {

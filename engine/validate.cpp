@@ -31,8 +31,9 @@ std::vector<std::string> file_kinds() {
   return kinds;
 }
 
-std::string validate_file(const std::string& path) {
-  const Node root = load_yaml_file(path);
+std::string validate_file(const std::string& path) { return validate_node(load_yaml_file(path)); }
+
+std::string validate_node(const Node& root) {
   const std::string kind = file_kind(root);
   if (kind == "object") {
     const ObjectSpec o = read_object(root);
@@ -46,7 +47,7 @@ std::string validate_file(const std::string& path) {
   }
   if (kind == "agent") return "agent " + read_agent(root).name;
   if (kind == "functions") {
-    const auto rules = load_rules(path);
+    const auto rules = read_rules(root);
     return "function models, " + std::to_string(function_count(*rules)) + " functions";
   }
   if (kind == "session") {

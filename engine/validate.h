@@ -20,5 +20,8 @@ void add_file_kind(const std::string& name, FileKindCheck check);
 // Loads, validates and compiles what one file defines, without running it.
 // Returns "<kind> <name>"; throws DataError on the first mistake.
 std::string validate_file(const std::string& path);
+// The same from a parsed document (the fuzzers): relative paths resolve
+// against the folder of the document's name.
+std::string validate_node(const Node& root);
 
 }  // namespace afford

@@ -1,9 +1,11 @@
 #include "trace_table.h"
 
 #include <cmath>
-#include <fstream>
+#include <filesystem>
+#include <sstream>
 #include <string_view>
 
+#include "files.h"
 #include "units.h"
 
 namespace afford {
@@ -82,15 +84,14 @@ TableFormat default_format(Rig rig) {
 }
 
 Trace read_trace(const std::string& path, const TableFormat& format, Rig rig, size_t min_rows) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(format.loc, "a readable trace file '" + path + "'", "none");
-  in.seekg(0, std::ios::end);
-  const auto bytes = static_cast<long>(in.tellg());
-  if (bytes > kMaxTraceBytes) {
-    fail(SourceLoc{path, 1, 1}, "a trace of at most " + std::to_string(kMaxTraceBytes >> 20) + " MiB",
-         std::to_string(bytes >> 20) + " MiB");
-  }
-  in.seekg(0);
+  // A missing trace is the measurement's mistake, named where it names the file.
+  if (!std::filesystem::exists(path)) fail(format.loc, "a readable trace file '" + path + "'", "none");
+  return parse_trace(read_regular_file(path, static_cast<size_t>(kMaxTraceBytes)), path, format, rig, min_rows);
+}
+
+Trace parse_trace(const std::string& text, const std::string& path, const TableFormat& format, Rig rig,
+                  size_t min_rows) {
+  std::istringstream in(text);
   std::vector<std::string> lines;
   for (std::string l; std::getline(in, l);) {
     if (lines.size() > kMaxTraceRows) fail(SourceLoc{path, static_cast<int>(lines.size()), 1}, "at most " + std::to_string(kMaxTraceRows) + " rows", "more");

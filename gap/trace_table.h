@@ -29,7 +29,11 @@ TableFormat default_format(Rig rig);
 // a finite number is an error naming the file, its line and column; so are
 // a time that does not increase, a missing column the rig needs (named at
 // format.loc), and fewer than `min_rows` rows.
+// Only a regular file of at most kMaxTraceBytes is read.
 Trace read_trace(const std::string& path, const TableFormat& format, Rig rig, size_t min_rows);
+// The same from the file's text, `path` naming it in errors.
+Trace parse_trace(const std::string& text, const std::string& path, const TableFormat& format, Rig rig,
+                  size_t min_rows);
 
 // The largest trace file read, bytes, and the most rows.
 inline constexpr long kMaxTraceBytes = 256L << 20;

@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "files.h"
+
 namespace afford::render {
 namespace {
 
@@ -167,10 +169,7 @@ Image decode_png(const std::vector<std::uint8_t>& bytes) {
 
 void write_png(const std::string& path, const Image& img) {
   const std::vector<std::uint8_t> bytes = encode_png(img);
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (f == nullptr) throw PngError("cannot write " + path);
-  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  if (std::fclose(f) != 0 || !ok) throw PngError("cannot write " + path);
+  write_file_checked(path, std::string(bytes.begin(), bytes.end()));
 }
 
 Image read_png(const std::string& path) {

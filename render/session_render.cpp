@@ -302,13 +302,7 @@ RenderSessionResult render_session(const CompiledSession& session, const RenderS
   write_png(plot, plot_png(timeline.timeline()));
   result.files.push_back(plot);
   const std::string svg = (out / "timeline.svg").string();
-  {
-    std::FILE* f = std::fopen(svg.c_str(), "w");
-    if (f == nullptr) throw std::runtime_error("cannot write " + svg);
-    const std::string text = plot_svg(timeline.timeline());
-    std::fwrite(text.data(), 1, text.size(), f);
-    std::fclose(f);
-  }
+  write_file_checked(svg, plot_svg(timeline.timeline()));
   result.files.push_back(svg);
 
   if (o.frames && o.mp4) {
