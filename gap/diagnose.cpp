@@ -167,6 +167,34 @@ std::string effects_text(const std::vector<EffectKind>& set) {
   return s.empty() ? "the nominal model" : s;
 }
 
+// Each trace's residual under the nominal model and under the set fitted
+// on the folds that did not judge it, as signals to plot.
+std::vector<HeldOutCurve> held_out_curves(const std::vector<Replay>& replays, const Fitter& fitter, const SetFit& nominal,
+                                          const std::vector<Fitter>& folds, const std::vector<std::vector<size_t>>& judged,
+                                          const std::vector<EffectKind>& chosen) {
+  std::vector<HeldOutCurve> curves(replays.size());
+  for (size_t f = 0; f < folds.size(); ++f) {
+    const SetFit fit = folds[f].fit(chosen);
+    for (size_t i : judged[f]) {
+      const Replay& r = replays[i];
+      const std::vector<double> before = fitter.residual(nominal, i), after = folds[f].residual(fit, i);
+      HeldOutCurve& c = curves[i];
+      c.file = r.file;
+      c.t = r.t;
+      c.x = r.x;
+      c.phase = r.phase;
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      for (size_t s = 0; s < r.t.size(); ++s) {
+        const double measured = r.measured[s] * r.to_newtons;
+        c.measured.push_back(measured);
+        c.nominal.push_back(r.fitted[s] ? measured - before[s] : nan);
+        c.fitted.push_back(r.fitted[s] ? measured - after[s] : nan);
+      }
+    }
+  }
+  return curves;
+}
+
 }  // namespace
 
 const char* verdict_name(Verdict v) {
@@ -288,6 +316,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     after.push_back(fitter.residual(current, i));
   }
   d.residual = whiteness(replays, after, all);
+  d.rig = m.rig;
+  d.curves = held_out_curves(replays, fitter, nominal, fold_fitters, judged, chosen);
   what_it_follows(replays, after, &d.residual.follows, &d.residual.correlation);
 
   if (matched(nominal)) {
