@@ -1,7 +1,8 @@
 // afford describe FILE: what the model derives from an object file (lever
 // pattern, mechanical advantage along the arm, interaction space, which
 // actees fit, spring force at each limit); `--effects` lists the optional
-// torque terms.
+// torque terms. The actees are the shipped ones (data_dir.h) unless
+// --actees names a folder.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "data_dir.h"
 #include "derive.h"
 #include "effects.h"
 #include "lever.h"
@@ -133,9 +135,7 @@ int run_describe(const Args& args) {
     throw std::runtime_error("--actees " + actee_dir + ": not a readable directory");
   }
   if (!actees_given) {
-    // The shipped actees sit beside the objects folder.
-    actee_dir = (std::filesystem::path(file).parent_path().parent_path() / "actees").string();
-    if (actee_dir == "actees" || !std::filesystem::is_directory(actee_dir)) actee_dir = "actees";
+    actee_dir = shipped_path("actees");  // data_dir.h, wherever the object is
   }
   describe_object(read_object(root), actee_dir);
   return 0;

@@ -1,13 +1,15 @@
 // afford guide OBJECT [--actees DIR] [--guides FILE] [--json]: the guides of
 // the paper (Sec. 4.4) for an object, computed as rules/guides.yaml says:
 // as text, or as one JSON object (SI units, the object frame) holding the
-// facts and the geometry a renderer draws.
+// facts and the geometry a renderer draws. The actees and the guides are
+// the shipped ones (data_dir.h) unless --actees or --guides names others.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "commands.h"
+#include "data_dir.h"
 #include "guides.h"
 #include "lever.h"
 #include "load.h"
@@ -216,13 +218,6 @@ void print_json(const Guides& g) {
   std::cout << j << "}\n";
 }
 
-// A data folder beside the object's folder (objects/../NAME), else NAME
-// relative to the working directory.
-std::string beside_objects(const std::string& object_file, const std::string& name) {
-  const std::filesystem::path p = std::filesystem::path(object_file).parent_path().parent_path() / name;
-  return std::filesystem::exists(p) ? p.string() : name;
-}
-
 }  // namespace
 
 int run_guide(const Args& args) {
@@ -247,8 +242,9 @@ int run_guide(const Args& args) {
   const Node root = load_yaml_file(file);
   const std::string kind = file_kind(root);
   if (kind != "object") return usage_error("guide reads object files; " + file + " is a " + kind + " file");
-  if (actee_dir.empty()) actee_dir = beside_objects(file, "actees");
-  if (guides_file.empty()) guides_file = (std::filesystem::path(beside_objects(file, "rules")) / "guides.yaml").string();
+  // Unless named, the shipped ones (data_dir.h), wherever the object is.
+  if (actee_dir.empty()) actee_dir = shipped_path("actees");
+  if (guides_file.empty()) guides_file = shipped_path("rules/guides.yaml");
   if (!actee_dir.empty() && !std::filesystem::is_directory(actee_dir)) {
     return usage_error("--actees: '" + actee_dir + "' is not a directory");
   }

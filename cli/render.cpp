@@ -3,7 +3,8 @@
 // second of session time (default 30), a contact sheet of the key moments,
 // the timeline plot (PNG and SVG) and, when ffmpeg is on PATH, an MP4.
 // --guides draws the guides of FILE (default: guides.yaml beside the
-// session's function models, rules/guides.yaml) in every picture.
+// session's function models, else the shipped rules/guides.yaml) in every
+// picture.
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "data_dir.h"
 #include "progress.h"
 #include "derive.h"
 #include "guides.h"
@@ -21,7 +23,8 @@ namespace afford::cli {
 
 namespace {
 
-// guides.yaml in the folder of a file the session read (its rules/ folder).
+// guides.yaml in the folder of a file the session read (its rules/ folder),
+// else the shipped one (data_dir.h).
 std::string default_guides(const CompiledSession& s) {
   namespace fs = std::filesystem;
   for (const std::string& f : s.files) {
@@ -29,7 +32,7 @@ std::string default_guides(const CompiledSession& s) {
     std::error_code ec;
     if (fs::is_regular_file(p, ec)) return p.string();
   }
-  return "rules/guides.yaml";
+  return shipped_path("rules/guides.yaml");
 }
 
 }  // namespace
