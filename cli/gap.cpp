@@ -1,4 +1,4 @@
-// afford gap MEASUREMENT [--json] [--effects a,b,...] [--write-patch DIR] [--probe]:
+// afford gap MEASUREMENT [--json] [--effects a,b,...] [--out DIR] [--write-patch DIR] [--probe]:
 // where and why the nominal model differs from the measured tool, which
 // effect of the library explains it, and how far the gap shrinks on data
 // the fit never saw (gap/README.md). With --probe: the lever and spring
@@ -10,6 +10,7 @@
 #include "did_you_mean.h"
 #include "diagnose.h"
 #include "patch.h"
+#include "plots.h"
 #include "probe.h"
 #include "report.h"
 
@@ -40,7 +41,7 @@ bool parse_library(const std::string& list, std::vector<EffectKind>* out, std::s
 }  // namespace
 
 int run_gap(const Args& args) {
-  std::string file, patch_dir;
+  std::string file, patch_dir, out_dir;
   bool json = false, probe = false;
   DiagnoseOptions options;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -52,13 +53,16 @@ int run_gap(const Args& args) {
       if (i + 1 >= args.size()) return usage_error("--effects needs a list of effects, e.g. pivot_friction,arm_inertia");
       std::string error;
       if (!parse_library(args[++i], &options.library, &error)) return usage_error(error);
+    } else if (args[i] == "--out") {
+      if (i + 1 >= args.size()) return usage_error("--out needs a DIR");
+      out_dir = args[++i];
     } else if (args[i] == "--write-patch") {
       if (i + 1 >= args.size()) return usage_error("--write-patch needs a DIR");
       patch_dir = args[++i];
     } else if (file.empty() && args[i].rfind("--", 0) != 0) {
       file = args[i];
     } else {
-      return usage_error("gap: unexpected '" + args[i] + "'; usage: afford gap MEASUREMENT [--json] [--effects a,b] [--write-patch DIR] [--probe]");
+      return usage_error("gap: unexpected '" + args[i] + "'; usage: afford gap MEASUREMENT [--json] [--effects a,b] [--out DIR] [--write-patch DIR] [--probe]");
     }
   }
   if (file.empty()) return usage_error("gap needs a MEASUREMENT file");
@@ -76,6 +80,9 @@ int run_gap(const Args& args) {
   }
   const Diagnosis d = diagnose(m, options);
   std::cout << (json ? report_json(d) + "\n" : report_text(d));
+  if (!out_dir.empty()) {
+    for (const std::string& written : write_gap_plots(d, out_dir)) std::cerr << "wrote " << written << "\n";
+  }
   if (!patch_dir.empty()) {
     for (const std::string& written : write_patch(m, d, patch_dir)) std::cerr << "wrote " << written << "\n";
   }

@@ -14,7 +14,7 @@ const std::vector<Command>& commands() {
       {"describe", "describe FILE [--actees DIR] | describe --effects",
        "what the model derives from a file: lever, advantage, interaction space, fits",
        run_describe},
-      {"gap", "gap MEASUREMENT [--json] [--effects a,b] [--write-patch DIR] [--probe]",
+      {"gap", "gap MEASUREMENT [--json] [--out DIR] [--effects a,b] [--write-patch DIR] [--probe]",
        "where a measured tool differs from its model, which effect explains it, how far the gap shrinks",
        run_gap},
       {"render", "render SESSION [--out DIR] [--fps N] [--size WxH] [--guides [FILE]] [--no-frames]",
