@@ -11,6 +11,7 @@
 
 #include "commands.h"
 #include "data_dir.h"
+#include "option_checks.h"
 #include "derive.h"
 #include "effects.h"
 #include "lever.h"
@@ -106,26 +107,19 @@ void describe_object(const ObjectSpec& o, const std::string& actee_dir) {
   }
 }
 
-}  // namespace
-
-int run_describe(const Args& args) {
+struct DescribeOptions {
   std::string file, actee_dir;
-  bool actees_given = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--effects") {
-      describe_effects();
-      return 0;
-    }
-    if (args[i] == "--actees") {
-      if (i + 1 >= args.size()) return usage_error("--actees needs a DIR");
-      actee_dir = args[++i];
-      actees_given = true;
-    } else if (file.empty()) {
-      file = args[i];
-    } else {
-      return usage_error("describe takes one FILE");
-    }
+  bool effects = false;
+};
+
+int describe(const DescribeOptions& o) {
+  if (o.effects) {
+    describe_effects();
+    return 0;
   }
+  const std::string& file = o.file;
+  std::string actee_dir = o.actee_dir;
+  const bool actees_given = !actee_dir.empty();
   if (file.empty()) return usage_error("describe needs a FILE (or --effects)");
   const Node root = load_yaml_file(file);
   const std::string kind = file_kind(root);
@@ -139,6 +133,20 @@ int run_describe(const Args& args) {
   }
   describe_object(read_object(root), actee_dir);
   return 0;
+}
+
+}  // namespace
+
+void add_describe(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand(
+      "describe", "what the model derives from an object file: lever, advantage, interaction space, fits");
+  auto o = std::make_shared<DescribeOptions>();
+  CLI::Option* file = cmd->add_option("FILE", o->file, "an object file (objects/*.yaml)")->type_name(kFile);
+  cmd->add_option("--actees", o->actee_dir, "the folder of actees to fit (default: the shipped actees)")
+      ->type_name(kDir);
+  cmd->add_flag("--effects", o->effects, "list the optional effects a file can switch on, instead of a FILE")
+      ->excludes(file);
+  cmd->callback([run, o] { *run = [o] { return describe(*o); }; });
 }
 
 }  // namespace afford::cli

@@ -10,6 +10,7 @@
 
 #include "commands.h"
 #include "data_dir.h"
+#include "option_checks.h"
 #include "guides.h"
 #include "lever.h"
 #include "load.h"
@@ -218,27 +219,16 @@ void print_json(const Guides& g) {
   std::cout << j << "}\n";
 }
 
-}  // namespace
-
-int run_guide(const Args& args) {
+struct GuideOptions {
   std::string file, actee_dir, guides_file;
   bool json = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--json") {
-      json = true;
-    } else if (args[i] == "--actees" || args[i] == "--guides") {
-      if (i + 1 >= args.size()) return usage_error(args[i] + (args[i] == "--actees" ? " needs a DIR" : " needs a FILE"));
-      (args[i] == "--actees" ? actee_dir : guides_file) = args[i + 1];
-      ++i;
-    } else if (args[i].starts_with("--")) {
-      return usage_error("guide: unknown option '" + args[i] + "'");
-    } else if (file.empty()) {
-      file = args[i];
-    } else {
-      return usage_error("guide takes one OBJECT file");
-    }
-  }
-  if (file.empty()) return usage_error("guide needs an OBJECT file");
+};
+
+int guide(GuideOptions o) {
+  const std::string& file = o.file;
+  std::string& actee_dir = o.actee_dir;
+  std::string& guides_file = o.guides_file;
+  const bool json = o.json;
   const Node root = load_yaml_file(file);
   const std::string kind = file_kind(root);
   if (kind != "object") return usage_error("guide reads object files; " + file + " is a " + kind + " file");
@@ -260,6 +250,21 @@ int run_guide(const Args& args) {
     print_text(guides, guides_file, actee_dir);
   }
   return 0;
+}
+
+}  // namespace
+
+void add_guide(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand(
+      "guide", "the four guides (symmetry, actee, emphasis, amplify/decline) of an object, as text or JSON");
+  auto o = std::make_shared<GuideOptions>();
+  cmd->add_option("OBJECT", o->file, "an object file (objects/*.yaml)")->required()->type_name(kFile);
+  cmd->add_option("--actees", o->actee_dir, "the folder of actees to fit (default: the shipped actees)")
+      ->type_name(kDir);
+  cmd->add_option("--guides", o->guides_file, "the guides file (default: the shipped rules/guides.yaml)")
+      ->type_name(kFile);
+  cmd->add_flag("--json", o->json, "print the guides as JSON");
+  cmd->callback([run, o] { *run = [o] { return guide(*o); }; });
 }
 
 }  // namespace afford::cli

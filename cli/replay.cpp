@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "option_checks.h"
 #include "recording_source.h"
 #include "run.h"
 #include "session_outputs.h"
@@ -67,30 +68,16 @@ void check_events(const Recording& rec, const RuleSet& rules) {
   }
 }
 
-}  // namespace
-
-int run_replay(const Args& args) {
+struct ReplayOptions {
   std::string file, rules_file, out_dir;
   bool json = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--json") {
-      json = true;
-    } else if (args[i] == "--out") {
-      if (i + 1 >= args.size()) return usage_error("--out needs a DIR");
-      out_dir = args[++i];
-    } else if (args[i] == "--rules") {
-      if (i + 1 >= args.size()) return usage_error("--rules needs a FILE of function models");
-      rules_file = args[++i];
-    } else if (!args[i].empty() && args[i][0] == '-') {
-      return usage_error("replay: unknown option '" + args[i] + "'");
-    } else if (file.empty()) {
-      file = args[i];
-    } else {
-      return usage_error("replay takes one recording");
-    }
-  }
-  if (file.empty()) return usage_error("replay needs a recording (made by afford run --record)");
+};
 
+int replay(const ReplayOptions& o) {
+  const std::string& file = o.file;
+  const std::string& rules_file = o.rules_file;
+  const std::string& out_dir = o.out_dir;
+  const bool json = o.json;
   const Recording rec = read_recording(file);
   const CompiledSession session = load_recorded_session(rec);
   check_events(rec, *session.rules);
@@ -184,6 +171,22 @@ int run_replay(const Args& args) {
   std::cout << diff.same << " events the same, " << diff.shifted << " shifted, " << diff.removed
             << " only in the recording, " << diff.added << " only in the re-run\n";
   return 0;
+}
+
+}  // namespace
+
+void add_replay(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand(
+      "replay", "re-run a recording: the recorded events bit for bit, or the timeline diff under edited rules");
+  auto o = std::make_shared<ReplayOptions>();
+  cmd->add_option("REC", o->file, "a recording (made by afford run --record or afford live)")
+      ->required()
+      ->type_name(kFile);
+  cmd->add_option("--rules", o->rules_file, "re-run under these function models and diff the timelines")
+      ->type_name(kFile);
+  cmd->add_flag("--json", o->json, "print the result as JSON");
+  cmd->add_option("--out", o->out_dir, "also write timeline.jsonl and trace.csv into DIR")->type_name(kDir);
+  cmd->callback([run, o] { *run = [o] { return replay(*o); }; });
 }
 
 }  // namespace afford::cli
