@@ -26,6 +26,7 @@ int run_run(const Args& args);
 int run_replay(const Args& args);
 int run_render(const Args& args);
 int run_rules(const Args& args);
+int run_schema(const Args& args);
 int run_test(const Args& args);
 
 // Prints "afford: <message>" to stderr and returns the exit status 2.

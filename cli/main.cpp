@@ -30,6 +30,7 @@ const std::vector<Command>& commands() {
       {"replay", "replay REC [--rules FILE] [--json] [--out DIR]",
        "re-run a recording: the recorded events bit for bit, or the timeline diff under edited rules",
        run_replay},
+      {"schema", "schema KIND|--all [--out DIR]", "the JSON Schema of a kind of YAML file, for editors", run_schema},
       {"test", "test [DIR] [--coverage]",
        "run the rule test cases under DIR (default tests/rules): PASS/FAIL each, nodes reached", run_test},
   };

@@ -3,10 +3,24 @@
 
 namespace afford {
 
+const MapSchema& actee_schema() {
+  using namespace schema;
+  static const MapSchema kActee{
+      "an actee file: what a tool acts on (actees/README.md)",
+      {required_key("actee", name(), "the actee's name"),
+       required_key("description", text(), "what it is, in a sentence"),
+       required_key("shape", mapping(shape_schema()), "its collision shape"),
+       required_key("mass", quantity(dim::mass), "its mass"),
+       required_key("force_direction", plain_vector(), "the direction it is loaded in, not all zeros"),
+       required_key("limit", quantity(dim::force), "the force at which it breaks or yields"),
+       required_key("stiffness", quantity(dim::stiffness), "its stiffness under the jaws"),
+       required_key("breaks", boolean(), "true if it breaks at the limit, false if it only yields"),
+       optional_key("effects", mapping(effects_schema(EffectHome::actee)), "optional effects of the actee")}};
+  return kActee;
+}
+
 ActeeSpec read_actee(const Node& root) {
-  MapReader m(root, "an actee file",
-              {"actee", "description", "shape", "mass", "force_direction", "limit", "stiffness", "breaks",
-               "effects"});
+  MapReader m(root, "an actee file", actee_schema());
   ActeeSpec a;
   a.loc = root.loc();
   a.file = root.loc().file;

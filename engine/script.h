@@ -135,6 +135,7 @@ inline constexpr double kMaxScriptDuration = 600;
 // that is wrong (an unknown key, a missing first-keyframe key, a time not
 // after the one before, a negative squeeze, ...).
 ScriptSpec read_script(const Node& sequence);
+const MapSchema& keyframe_schema();  // the keys of one keyframe
 
 // ------------------------------------------------------------ compiled
 

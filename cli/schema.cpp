@@ -1,0 +1,81 @@
+// afford schema KIND [--out DIR] | afford schema --all --out DIR: the JSON
+// Schema of each kind of YAML file, for editors (schemas/README.md).
+#include <filesystem>
+#include <iostream>
+
+#include "commands.h"
+#include "device_description.h"
+#include "did_you_mean.h"
+#include "files.h"
+#include "grasps.h"
+#include "guides.h"
+#include "json_schema.h"
+#include "load.h"
+#include "measurement.h"
+#include "rule_tests.h"
+#include "session.h"
+
+namespace afford::cli {
+namespace {
+
+struct SchemaKind {
+  const char* kind;  // the file is KIND.schema.json
+  const MapSchema& (*root)();
+};
+
+// Every kind of YAML file afford reads, in the order of docs/file-kinds.md.
+constexpr SchemaKind kKinds[] = {
+    {"object", object_schema},        {"actee", actee_schema},       {"agent", agent_schema},
+    {"functions", functions_schema},  {"grasps", grasps_schema},   {"guides", guides_schema},
+    {"session", session_schema},      {"device", device_schema},   {"rule_test", rule_test_schema},
+    {"measurement", measurement_schema},
+};
+
+void write_schema(const SchemaKind& k, const std::string& dir) {
+  write_file_checked((std::filesystem::path(dir) / (std::string(k.kind) + ".schema.json")).string(),
+                     json_schema(k.kind, k.root()));
+}
+
+}  // namespace
+
+int run_schema(const Args& args) {
+  std::string which;
+  std::string out;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--out") {
+      if (i + 1 == args.size()) return usage_error("--out needs a folder");
+      out = args[++i];
+    } else if (which.empty()) {
+      which = args[i];
+    } else {
+      return usage_error("schema takes one KIND or --all, found '" + args[i] + "' too");
+    }
+  }
+  if (which.empty()) return usage_error("schema needs a KIND or --all");
+  if (!out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (!std::filesystem::is_directory(out)) return usage_error("--out " + out + ": not a folder");
+  }
+  if (which == "--all") {
+    if (out.empty()) return usage_error("schema --all needs --out DIR");
+    for (const SchemaKind& k : kKinds) write_schema(k, out);
+    return 0;
+  }
+  std::vector<std::string> names;
+  for (const SchemaKind& k : kKinds) {
+    names.emplace_back(k.kind);
+    if (which != k.kind) continue;
+    if (out.empty()) {
+      std::cout << json_schema(k.kind, k.root());
+    } else {
+      write_schema(k, out);
+    }
+    return 0;
+  }
+  std::string kinds;
+  for (const std::string& n : names) kinds += (kinds.empty() ? "" : ", ") + n;
+  return usage_error("unknown kind '" + which + "'" + did_you_mean(which, names) + " (kinds: " + kinds + ")");
+}
+
+}  // namespace afford::cli
