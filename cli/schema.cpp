@@ -1,5 +1,5 @@
 // afford schema KIND [--out DIR] | afford schema --all --out DIR: the JSON
-// Schema of each kind of YAML file, for editors (schemas/README.md).
+// Schema of each kind of YAML file, for editors (docs/file-kinds.md).
 #include <filesystem>
 #include <iostream>
 

@@ -1,6 +1,6 @@
 // JSON Schemas (draft-07) for editors, written from the key tables of
 // schema.h: with the YAML language server an editor completes and checks
-// the files (schemas/README.md).
+// the files (docs/file-kinds.md).
 #pragma once
 
 #include <string>

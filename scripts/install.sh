@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libfcl-dev libccd-dev libyaml-cpp-dev
   libglm-dev libosmesa6-dev zlib1g-dev libusb-1.0-0-dev umockdev libumockdev-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev
+  nlohmann-json3-dev python3-jsonschema python3-yaml
 )
 missing=()
 for p in "${packages[@]}"; do
