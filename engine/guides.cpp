@@ -38,9 +38,12 @@ namespace {
 constexpr GuideKind kKinds[] = {GuideKind::symmetry_plane, GuideKind::interaction_space, GuideKind::emphasis,
                                 GuideKind::advantage};
 
+// [r, g, b], each a bare number in 0..1 (read_colour).
+ValueSchema colour_value() { return schema::sequence(schema::number(), 3, 3); }
+
 const MapSchema& ramp_schema() {
   using namespace schema;
-  const ValueSchema colour = sequence(number(), 3, 3);
+  const ValueSchema colour = colour_value();
   static const MapSchema kRamp{"the colours of the advantage ramp",
                                {required_key("decline", colour, "below an advantage of 1"),
                                 required_key("neutral", colour, "at an advantage of 1"),
@@ -51,7 +54,7 @@ const MapSchema& ramp_schema() {
 // The keys of a guide of kind `k`: the keys every guide has, then its kind's.
 MapSchema make_guide_schema(GuideKind k) {
   using namespace schema;
-  const ValueSchema colour = sequence(number(), 3, 3);
+  const ValueSchema colour = colour_value();
   MapSchema m{std::string("a guide of kind ") + guide_kind_name(k),
               {required_key("name", name(), "the guide's name, unique in the file"),
                required_key("kind", choice({guide_kind_name(k)}), "what the guide shows"),
@@ -61,21 +64,21 @@ MapSchema make_guide_schema(GuideKind k) {
                optional_key("lift", quantity(dim::length), "how far it is drawn off the surface")}};
   switch (k) {
     case GuideKind::symmetry_plane:
-      m.keys.push_back(optional_key("margin", quantity(dim::length), "how far the plane reaches past the tool"));
-      m.keys.push_back(optional_key("gravity", plain_vector(), "the direction of gravity, not all zeros"));
+      m.keys.push_back(optional_key("margin", quantity(dim::length), "how far the plane's rectangle exceeds the object"));
+      m.keys.push_back(optional_key("gravity", plain_vector(), "gravity's direction in the world (default [0, 0, -1])"));
       break;
     case GuideKind::interaction_space:
       m.keys.push_back(optional_key("fit_colour", colour, "the colour of an actee that fits"));
       m.keys.push_back(optional_key("misfit_colour", colour, "the colour of an actee that does not"));
       break;
     case GuideKind::emphasis:
-      m.keys.push_back(optional_key("faces", choice({"closing", "opening", "both"}), "which faces are marked"));
+      m.keys.push_back(optional_key("faces", choice({"closing", "opening", "both"}), "the faces to mark: pressed to close, to open, or both"));
       break;
     case GuideKind::advantage: {
-      m.keys.push_back(required_key("step", quantity(dim::length), "the distance between samples on the arm"));
+      m.keys.push_back(required_key("step", quantity(dim::length), "the segment length along each arm"));
       m.keys.push_back(optional_key("load_at", choice({"from", "middle", "to"}), "where in the application "
                                     "region the load sits"));
-      m.keys.push_back(optional_key("saturate", number(), "the advantage, above 1, that takes the full colour"));
+      m.keys.push_back(optional_key("saturate", number(), "the advantage, above 1, at which the ramp reaches amplify (default 2)"));
       m.keys.push_back(required_key("ramp", mapping(ramp_schema()), "the colours of the ramp"));
       break;
     }

@@ -49,7 +49,13 @@ Json value_schema(const ValueSchema& v) {
     case Type::plain_vector:
       return {{"type", "array"}, {"items", value_schema(schema::number())}, {"minItems", 3}, {"maxItems", 3}};
     case Type::sequence: {
-      Json s = {{"type", "array"}, {"items", value_schema(v.items.at(0))}};
+      Json s = {{"type", "array"}};
+      if (v.items.size() == 2) {
+        s["items"] = Json::array({value_schema(v.items[1])});
+        s["additionalItems"] = value_schema(v.items[0]);
+      } else {
+        s["items"] = value_schema(v.items.at(0));
+      }
       if (v.min_items > 0) s["minItems"] = v.min_items;
       if (v.max_items > 0) s["maxItems"] = v.max_items;
       return s;

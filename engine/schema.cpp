@@ -51,6 +51,11 @@ ValueSchema sequence(ValueSchema item, size_t min_items, size_t max_items) {
   v.max_items = max_items;
   return v;
 }
+ValueSchema sequence_starting(ValueSchema first, ValueSchema item, size_t min_items) {
+  ValueSchema v = sequence(std::move(item), min_items);
+  v.items.push_back(std::move(first));
+  return v;
+}
 ValueSchema mapping(const MapSchema& m) {
   ValueSchema v = of(Type::mapping);
   v.mapping = &m;

@@ -27,7 +27,7 @@ struct ValueSchema {
     expression,    // a predicate expression (rules)
     vector,        // three quantities of `dimension`
     plain_vector,  // three bare numbers
-    sequence,      // of items[0], with min_items..max_items elements
+    sequence,      // of items[0] (its first element items[1], if given), min_items..max_items long
     mapping,       // the keys of `mapping`
     any_of,        // one of the alternatives in `items`
   };
@@ -78,6 +78,8 @@ ValueSchema expression();
 ValueSchema vector(const Dimension& d);
 ValueSchema plain_vector();
 ValueSchema sequence(ValueSchema item, size_t min_items = 0, size_t max_items = 0);
+// A sequence whose first element has more to say than the rest.
+ValueSchema sequence_starting(ValueSchema first, ValueSchema item, size_t min_items);
 ValueSchema mapping(const MapSchema& m);
 ValueSchema any_of(std::vector<ValueSchema> alternatives);
 

@@ -35,10 +35,10 @@ const MapSchema& grip_schema() {
   using namespace schema;
   static const MapSchema kGrip{
       "thumb and index on the arms, by distance from the fulcrum",
-      {required_key("thumb", quantity(dim::length), "where the thumb pushes, on the moving arm"),
+      {required_key("thumb", quantity(dim::length), "the thumb on the moving arm's outer face, at this signed distance"),
        required_key("index", any_of({quantity(dim::length), choice({"none"})}),
-                    "where the index holds, on the fixed arm, or none"),
-       required_key("squeeze", quantity(dim::length), "how far the thumb presses past the arm's surface")}};
+                    "the index on the fixed arm's outer face at this distance, or none"),
+       required_key("squeeze", quantity(dim::length), "how far the thumb is advanced past the rest angle, 0 or more")}};
   return kGrip;
 }
 
@@ -124,6 +124,17 @@ const MapSchema& keyframe_schema() {
        optional_key("posture", any_of({name(), mapping(posture_schema())}),
                     "a grasp type's name, or every finger's joint angles")}};
   return kKeyframe;
+}
+
+const MapSchema& first_keyframe_schema() {
+  static const MapSchema kFirst = [] {
+    MapSchema m = keyframe_schema();
+    m.description = "the first keyframe: it gives hand, grip or fingertips, and posture";
+    for (KeySchema& k : m.keys) k.required = k.required || k.key == "hand" || k.key == "posture";
+    m.exactly_one_of.push_back({"grip", "fingertips"});
+    return m;
+  }();
+  return kFirst;
 }
 
 namespace {

@@ -67,7 +67,8 @@ const MapSchema& session_schema() {
        optional_key("timestep", quantity(dim::time), "the simulation step, 10 us to 100 ms (default 1 ms)"),
        optional_key("contact_tolerance", quantity(dim::length), "how near counts as touching (default 0.5 mm)"),
        optional_key("camera", mapping(camera_schema()), "where the renderer looks from"),
-       required_key("script", sequence(mapping(keyframe_schema()), 1), "the agent's keyframes")}};
+       required_key("script", sequence_starting(mapping(first_keyframe_schema()), mapping(keyframe_schema()), 1),
+                    "the agent's keyframes")}};
   return kSession;
 }
 

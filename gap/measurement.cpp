@@ -26,12 +26,22 @@ Dimension dimension_of(Signal s) {
   return dim::none;
 }
 
-const MapSchema& column_schema() {
-  using namespace schema;
-  static const MapSchema kColumn{"where a signal is in the table",
-                                 {required_key("column", text(), "the column's header"),
-                                  optional_key("unit", text(), "the unit of its values (none for a count)")}};
-  return kColumn;
+// Where a signal is in the table: its unit is required unless it is a count.
+const MapSchema& column_schema(Signal s) {
+  static const std::vector<MapSchema> kColumns = [] {
+    std::vector<MapSchema> all;
+    for (int i = 0; i < kSignals; ++i) {
+      const Dimension d = dimension_of(static_cast<Signal>(i));
+      const bool count = d == dim::none;
+      all.push_back(MapSchema{"where a signal is in the table",
+                              {schema::required_key("column", schema::text(), "the column's header"),
+                               KeySchema{"unit", schema::text(), !count,
+                                         count ? "none: the signal is a count"
+                                               : "the unit of its values, " + describe_dimension(d)}}});
+    }
+    return all;
+  }();
+  return kColumns[static_cast<size_t>(s)];
 }
 
 const MapSchema& columns_schema() {
@@ -39,7 +49,8 @@ const MapSchema& columns_schema() {
     MapSchema m{"the columns of the signals; t always, and the rig's two"};
     for (int i = 0; i < kSignals; ++i) {
       const char* name = signal_name(static_cast<Signal>(i));
-      m.keys.push_back(schema::optional_key(name, schema::mapping(column_schema()), std::string("the column of ") + name));
+      m.keys.push_back(schema::optional_key(name, schema::mapping(column_schema(static_cast<Signal>(i))),
+                                            std::string("the column of ") + name));
     }
     return m;
   }();
@@ -89,7 +100,7 @@ TableFormat read_format(const Node& node, Rig rig) {
   for (const auto& [name, value] : cols.entries()) {
     int s = 0;
     while (names[static_cast<size_t>(s)] != name) ++s;
-    MapReader c(value, "the column of " + name, column_schema());
+    MapReader c(value, "the column of " + name, column_schema(static_cast<Signal>(s)));
     f.column[static_cast<size_t>(s)] = read_string(c.required("column"));
     const Dimension want = dimension_of(static_cast<Signal>(s));
     if (std::optional<Node> unit = c.optional("unit")) {

@@ -78,7 +78,11 @@ def mappings(instance, schema, path=()):
                 yield from mappings(value, schema["properties"][key], path + (key,))
     elif "items" in schema and isinstance(instance, list):
         for i, item in enumerate(instance):
-            yield from mappings(item, schema["items"], path + (i,))
+            # [first] with additionalItems: the first element's own schema.
+            items = schema["items"]
+            if isinstance(items, list):
+                items = items[i] if i < len(items) else schema["additionalItems"]
+            yield from mappings(item, items, path + (i,))
 
 
 def at(document, path):
