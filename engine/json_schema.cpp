@@ -93,15 +93,21 @@ Json map_schema(const MapSchema& m) {
     s["minProperties"] = 1;
     s["maxProperties"] = 1;
   }
-  if (!m.exactly_one_of.empty()) {
-    Json all = Json::array();
-    for (const std::vector<std::string>& group : m.exactly_one_of) {
-      Json one = Json::array();
-      for (const std::string& key : group) one.push_back({{"required", Json::array({key})}});
-      all.push_back({{"oneOf", one}});
-    }
-    s["allOf"] = all;
+  Json all = Json::array();
+  for (const std::vector<std::string>& group : m.exactly_one_of) {
+    Json one = Json::array();
+    for (const std::string& key : group) one.push_back({{"required", Json::array({key})}});
+    all.push_back({{"oneOf", one}});
   }
+  for (const RequiredWhen& r : m.required_when) {
+    Json is = {{"properties", {{r.key, {{"const", r.value}}}}}, {"required", Json::array({r.key})}};
+    all.push_back({{"if", is}, {"then", {{"required", r.then_required}}}, {"else", {{"required", r.otherwise_required}}}});
+  }
+  for (const StricterWithout& w : m.stricter_without) {
+    Json lacks = {{"not", {{"required", Json::array({w.missing_key})}}}};
+    all.push_back({{"if", lacks}, {"then", {{"properties", {{w.key, value_schema(w.value)}}}}}});
+  }
+  if (!all.empty()) s["allOf"] = all;
   return s;
 }
 

@@ -36,6 +36,16 @@ const MapSchema& session_in_place_schema() {
   return kInPlace;
 }
 
+// The same when the case gives no rules: the session must.
+const MapSchema& session_in_place_with_rules_schema() {
+  static const MapSchema kWithRules = [] {
+    MapSchema m = session_in_place_schema();
+    for (KeySchema& k : m.keys) k.required = k.required || k.key == "rules";
+    return m;
+  }();
+  return kWithRules;
+}
+
 const MapSchema& expected_function_schema() {
   using namespace schema;
   static const MapSchema kExpected{
@@ -385,7 +395,8 @@ std::string times_text(int n) { return n == 1 ? "once" : (n == 2 ? "twice" : std
 
 const MapSchema& rule_test_schema() {
   using namespace schema;
-  static const MapSchema kCase{
+  static const MapSchema kCase = [] {
+    MapSchema m{
       "a rule test case: a session and the functions it must infer (tests/rules/README.md)",
       {required_key("test", name(), "the case's name"),
        optional_key("note", text(), "why the case exists, in a sentence"),
@@ -397,6 +408,10 @@ const MapSchema& rule_test_schema() {
        optional_key("reject", sequence(any_of({name(), mapping(rejected_function_schema())}), 1),
                     "functions that must not be inferred"),
        optional_key("error", text(), "a text the error of loading the files must contain")}};
+    m.stricter_without.push_back(
+        {"rules", "session", any_of({path(), mapping(session_in_place_with_rules_schema())})});
+    return m;
+  }();
   return kCase;
 }
 

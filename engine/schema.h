@@ -47,6 +47,23 @@ struct KeySchema {
   std::string description;  // one line, for the editor's hover
 };
 
+// Keys required only when another key has a given value (rig: plates
+// needs an actee) or has not, or is absent (any other rig an object).
+struct RequiredWhen {
+  std::string key;
+  std::string value;
+  std::vector<std::string> then_required;
+  std::vector<std::string> otherwise_required;
+};
+
+// A key's value held to a stricter schema when the mapping lacks another
+// key (a rule test without rules needs them in its session).
+struct StricterWithout {
+  std::string missing_key;
+  std::string key;
+  ValueSchema value;
+};
+
 struct MapSchema {
   explicit MapSchema(std::string description_, std::vector<KeySchema> keys_ = {}, bool exactly_one_key_ = false,
                      std::vector<std::vector<std::string>> exactly_one_of_ = {})
@@ -59,6 +76,8 @@ struct MapSchema {
   std::vector<KeySchema> keys;
   bool exactly_one_key = false;  // a tagged union: shape: {box: ...}
   std::vector<std::vector<std::string>> exactly_one_of;  // groups of keys of which one is given
+  std::vector<RequiredWhen> required_when;
+  std::vector<StricterWithout> stricter_without;
 
   // The keys the mapping may have, in declaration order (MapReader's list).
   std::vector<std::string> key_names() const;

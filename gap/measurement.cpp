@@ -126,7 +126,8 @@ TableFormat read_format(const Node& node, Rig rig) {
 
 const MapSchema& measurement_schema() {
   using namespace schema;
-  static const MapSchema kMeasurement{
+  static const MapSchema kMeasurement = [] {
+    MapSchema m{
       "a measurement file: a real tool's traces (measurements/README.md)",
       {required_key("measurement", name(), "the measurement's name"),
        optional_key("description", text(), "what was measured, in a sentence"),
@@ -141,6 +142,9 @@ const MapSchema& measurement_schema() {
        optional_key("effects", mapping(effects_schema(EffectHome::measurement)), "effects to switch on")},
       false,
       {{"trace", "traces"}}};
+    m.required_when.push_back({"rig", "plates", {"actee"}, {"object", "effort_at"}});
+    return m;
+  }();
   return kMeasurement;
 }
 
