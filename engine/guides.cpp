@@ -64,21 +64,25 @@ MapSchema make_guide_schema(GuideKind k) {
                optional_key("lift", quantity(dim::length), "how far it is drawn off the surface")}};
   switch (k) {
     case GuideKind::symmetry_plane:
-      m.keys.push_back(optional_key("margin", quantity(dim::length), "how far the plane's rectangle exceeds the object"));
-      m.keys.push_back(optional_key("gravity", plain_vector(), "gravity's direction in the world (default [0, 0, -1])"));
+      m.keys.push_back(
+          optional_key("margin", quantity(dim::length), "how far the plane's rectangle exceeds the object"));
+      m.keys.push_back(
+          optional_key("gravity", plain_vector(), "gravity's direction in the world (default [0, 0, -1])"));
       break;
     case GuideKind::interaction_space:
       m.keys.push_back(optional_key("fit_colour", colour, "the colour of an actee that fits"));
       m.keys.push_back(optional_key("misfit_colour", colour, "the colour of an actee that does not"));
       break;
     case GuideKind::emphasis:
-      m.keys.push_back(optional_key("faces", choice({"closing", "opening", "both"}), "the faces to mark: pressed to close, to open, or both"));
+      m.keys.push_back(optional_key("faces", choice({"closing", "opening", "both"}),
+                                    "the faces to mark: pressed to close, to open, or both"));
       break;
     case GuideKind::advantage: {
       m.keys.push_back(required_key("step", quantity(dim::length), "the segment length along each arm"));
       m.keys.push_back(optional_key("load_at", choice({"from", "middle", "to"}), "where in the application "
                                     "region the load sits"));
-      m.keys.push_back(optional_key("saturate", number(), "the advantage, above 1, at which the ramp reaches amplify (default 2)"));
+      m.keys.push_back(optional_key("saturate", number(),
+                                    "the advantage, above 1, at which the ramp reaches amplify (default 2)"));
       m.keys.push_back(required_key("ramp", mapping(ramp_schema()), "the colours of the ramp"));
       break;
     }

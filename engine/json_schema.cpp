@@ -101,7 +101,9 @@ Json map_schema(const MapSchema& m) {
   }
   for (const RequiredWhen& r : m.required_when) {
     Json is = {{"properties", {{r.key, {{"const", r.value}}}}}, {"required", Json::array({r.key})}};
-    all.push_back({{"if", is}, {"then", {{"required", r.then_required}}}, {"else", {{"required", r.otherwise_required}}}});
+    all.push_back({{"if", is},
+                   {"then", {{"required", r.then_required}}},
+                   {"else", {{"required", r.otherwise_required}}}});
   }
   for (const StricterWithout& w : m.stricter_without) {
     Json lacks = {{"not", {{"required", Json::array({w.missing_key})}}}};

@@ -56,9 +56,11 @@ const MapSchema& agent_schema() {
       "an agent file: a hand (agents/README.md)",
       {required_key("agent", name(), "the agent's name"),
        required_key("description", text(), "what it is, in a sentence"),
-       required_key("force_gain", quantity(dim::stiffness), "f_a of eq. 3: the hand's stiffness between the tracked thumb and the arm"),
+       required_key("force_gain", quantity(dim::stiffness),
+                    "f_a of eq. 3: the hand's stiffness between the tracked thumb and the arm"),
        required_key("max_force", quantity(dim::force), "the largest effort force the hand can exert at the emphasis"),
-       optional_key("damping", quantity(dim::damping), "the hand's damping, in parallel with force_gain (default none)"),
+       optional_key("damping", quantity(dim::damping),
+                    "the hand's damping, in parallel with force_gain (default none)"),
        required_key("fingers", mapping(fingers_schema()), "every finger's tip and joint ranges")}};
   return kAgent;
 }

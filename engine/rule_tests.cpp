@@ -397,17 +397,17 @@ const MapSchema& rule_test_schema() {
   using namespace schema;
   static const MapSchema kCase = [] {
     MapSchema m{
-      "a rule test case: a session and the functions it must infer (tests/rules/README.md)",
-      {required_key("test", name(), "the case's name"),
-       optional_key("note", text(), "why the case exists, in a sentence"),
-       required_key("session", any_of({path(), mapping(session_in_place_schema())}),
-                    "the session file, or the session's keys in place"),
-       optional_key("rules", path(), "a function-model file used instead of the session's"),
-       optional_key("expect", sequence(any_of({name(), mapping(expected_function_schema())}), 1),
-                    "functions that must be inferred"),
-       optional_key("reject", sequence(any_of({name(), mapping(rejected_function_schema())}), 1),
-                    "functions that must not be inferred"),
-       optional_key("error", text(), "a text the error of loading the files must contain")}};
+        "a rule test case: a session and the functions it must infer (tests/rules/README.md)",
+        {required_key("test", name(), "the case's name"),
+         optional_key("note", text(), "why the case exists, in a sentence"),
+         required_key("session", any_of({path(), mapping(session_in_place_schema())}),
+                      "the session file, or the session's keys in place"),
+         optional_key("rules", path(), "a function-model file used instead of the session's"),
+         optional_key("expect", sequence(any_of({name(), mapping(expected_function_schema())}), 1),
+                      "functions that must be inferred"),
+         optional_key("reject", sequence(any_of({name(), mapping(rejected_function_schema())}), 1),
+                      "functions that must not be inferred"),
+         optional_key("error", text(), "a text the error of loading the files must contain")}};
     m.stricter_without.push_back(
         {"rules", "session", any_of({path(), mapping(session_in_place_with_rules_schema())})});
     return m;

@@ -35,7 +35,8 @@ const MapSchema& grip_schema() {
   using namespace schema;
   static const MapSchema kGrip{
       "thumb and index on the arms, by distance from the fulcrum",
-      {required_key("thumb", quantity(dim::length), "the thumb on the moving arm's outer face, at this signed distance"),
+      {required_key("thumb", quantity(dim::length),
+                    "the thumb on the moving arm's outer face, at this signed distance"),
        required_key("index", any_of({quantity(dim::length), choice({"none"})}),
                     "the index on the fixed arm's outer face at this distance, or none"),
        required_key("squeeze", quantity(dim::length), "how far the thumb is advanced past the rest angle, 0 or more")}};

@@ -128,20 +128,20 @@ const MapSchema& measurement_schema() {
   using namespace schema;
   static const MapSchema kMeasurement = [] {
     MapSchema m{
-      "a measurement file: a real tool's traces (measurements/README.md)",
-      {required_key("measurement", name(), "the measurement's name"),
-       optional_key("description", text(), "what was measured, in a sentence"),
-       optional_key("rig", choice({"lever", "plates"}), "a tool worked by its lever (default), or plates"),
-       optional_key("object", any_of({path(), mapping(object_schema())}), "the object file (lever rig)"),
-       optional_key("actee", any_of({mapping(actee_entry_schema()), mapping(plates_actee_schema())}),
-                    "the actee, at a distance on the jaw (lever rig) or alone (plates)"),
-       optional_key("effort_at", quantity(dim::length), "where the effort was applied, in the emphasis region"),
-       optional_key("trace", path(), "the trace file (or traces)"),
-       optional_key("traces", sequence(path(), 1, 1000), "the trace files (or trace)"),
-       optional_key("format", mapping(format_schema()), "how the trace files are laid out"),
-       optional_key("effects", mapping(effects_schema(EffectHome::measurement)), "effects to switch on")},
-      false,
-      {{"trace", "traces"}}};
+        "a measurement file: a real tool's traces (gap/README.md)",
+        {required_key("measurement", name(), "the measurement's name"),
+         optional_key("description", text(), "what was measured, in a sentence"),
+         optional_key("rig", choice({"lever", "plates"}), "a tool worked by its lever (default), or plates"),
+         optional_key("object", any_of({path(), mapping(object_schema())}), "the object file (lever rig)"),
+         optional_key("actee", any_of({mapping(actee_entry_schema()), mapping(plates_actee_schema())}),
+                      "the actee, at a distance on the jaw (lever rig) or alone (plates)"),
+         optional_key("effort_at", quantity(dim::length), "where the effort was applied, in the emphasis region"),
+         optional_key("trace", path(), "the trace file (or traces)"),
+         optional_key("traces", sequence(path(), 1, 1000), "the trace files (or trace)"),
+         optional_key("format", mapping(format_schema()), "how the trace files are laid out"),
+         optional_key("effects", mapping(effects_schema(EffectHome::measurement)), "effects to switch on")},
+        false,
+        {{"trace", "traces"}}};
     m.required_when.push_back({"rig", "plates", {"actee"}, {"object", "effort_at"}});
     return m;
   }();
