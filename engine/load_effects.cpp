@@ -34,6 +34,7 @@ const MapSchema& effect_schema(const EffectManifest& e) {
     }
     return all;
   }();
+  // Every manifest is the registry's own (find_effect, manifest_of).
   return kEffects[static_cast<size_t>(&e - effect_registry().data())];
 }
 

@@ -3,7 +3,6 @@
 // JSON Schema for editors, so the two cannot disagree on a key.
 #pragma once
 
-#include <initializer_list>
 #include <string>
 #include <vector>
 
