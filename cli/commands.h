@@ -24,6 +24,7 @@ void add_rules(CLI::App& app, Run* run);
 void add_run(CLI::App& app, Run* run);
 void add_live(CLI::App& app, Run* run);
 void add_replay(CLI::App& app, Run* run);
+void add_schema(CLI::App& app, Run* run);
 void add_test(CLI::App& app, Run* run);
 void add_completion(CLI::App& app, Run* run);
 
