@@ -442,18 +442,7 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
   glDisableClientState(GL_NORMAL_ARRAY);
   glFinish();
 
-  // RGBA bottom-up -> RGB top-down, then the supersampled average.
-  Image big(w, h);
-  for (int y = 0; y < h; ++y) {
-    const unsigned char* src = &im.buffer[static_cast<size_t>(h - 1 - y) * static_cast<size_t>(w) * 4];
-    std::uint8_t* dst = &big.rgb[static_cast<size_t>(y) * static_cast<size_t>(w) * 3];
-    for (int x = 0; x < w; ++x) {
-      dst[3 * x] = src[4 * x];
-      dst[3 * x + 1] = src[4 * x + 1];
-      dst[3 * x + 2] = src[4 * x + 2];
-    }
-  }
-  Image out = downsample(big, ss);
+  Image out = from_gl_rgba(im.buffer.data(), w, h, ss);
   // Guide labels, at their anchors, moved down past the ones already placed.
   std::vector<Eigen::AlignedBox2i> placed;
   for (const GuideLabel& l : labels) {
