@@ -12,10 +12,10 @@
 #include "data_dir.h"
 #include "option_checks.h"
 #include "guides.h"
+#include "json_output.h"
 #include "lever.h"
 #include "load.h"
 #include "model.h"
-#include "trace.h"
 
 namespace afford::cli {
 namespace {
@@ -148,75 +148,81 @@ void print_text(const Guides& g, const std::string& guides_file, const std::stri
 
 // ---------------------------------------------------------------- JSON
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", std::abs(v) < 1e-15 ? 0.0 : v);
-  return buf;
-}
+// Rounding noise below 1e-15 is printed as 0.
+Json num(double v) { return json_number(std::abs(v) < 1e-15 ? 0.0 : v); }
 
-std::string vec(const Eigen::Vector3d& v) { return "[" + num(v.x()) + "," + num(v.y()) + "," + num(v.z()) + "]"; }
+Json vec(const Eigen::Vector3d& v) { return {num(v.x()), num(v.y()), num(v.z())}; }
 
-std::string colour(const GuideColour& c) {
-  return "[" + num(c.r) + "," + num(c.g) + "," + num(c.b) + "," + num(c.a) + "]";
-}
+Json colour(const GuideColour& c) { return {num(c.r), num(c.g), num(c.b), num(c.a)}; }
 
-std::string head(int guide, Arm frame) {
-  return "{\"guide\":" + std::to_string(guide) + ",\"frame\":\"" + (frame == Arm::fixed ? "fixed" : "moving") + "\"";
-}
+// The fields every drawn element starts with.
+Json head(int guide, Arm frame) { return {{"guide", guide}, {"frame", frame == Arm::fixed ? "fixed" : "moving"}}; }
 
 template <typename T, typename F>
-std::string list(const std::vector<T>& items, F item) {
-  std::string j = "[";
-  for (size_t i = 0; i < items.size(); ++i) j += (i ? "," : "") + item(items[i]);
-  return j + "]";
+Json list(const std::vector<T>& items, F item) {
+  Json j = Json::array();
+  for (const T& x : items) j.push_back(item(x));
+  return j;
 }
 
 void print_json(const Guides& g) {
   const GuideFacts& f = g.facts;
-  std::string j = "{\"object\":" + json_string(g.object);
-  j += ",\"guides\":" + list(g.guides, [](const GuideSpec& s) {
-         return "{\"name\":" + json_string(s.name) + ",\"kind\":\"" + guide_kind_name(s.kind) +
-                "\",\"description\":" + json_string(s.description) + ",\"colour\":" + colour(s.colour) + "}";
-       });
   const Eigen::Matrix3d r = f.functional_pose.linear();
-  j += ",\"facts\":{\"pattern\":\"" + std::string(pattern_name(f.pattern)) + "\"";
-  j += ",\"symmetry_plane\":{\"point\":" + vec(f.symmetry_point) + ",\"normal\":" + vec(f.symmetry_normal) + "}";
-  j += ",\"functional_pose\":{\"position\":" + vec(f.functional_pose.translation()) + ",\"rotation\":[" +
-       vec(r.row(0)) + "," + vec(r.row(1)) + "," + vec(r.row(2)) + "]}";
-  j += ",\"plane_to_gravity\":" + num(f.plane_to_gravity);
-  j += ",\"interaction_space\":{\"from\":" + num(f.space.from) + ",\"to\":" + num(f.space.to) +
-       ",\"gap_from\":" + num(f.space.gap_from) + ",\"gap_to\":" + num(f.space.gap_to) + "}";
-  j += ",\"actees\":" + list(f.actees, [](const ActeeFit& a) {
-         return "{\"name\":" + json_string(a.name) + ",\"fits\":" + (a.fits ? "true" : "false") +
-                ",\"from\":" + num(a.from) + ",\"to\":" + num(a.to) + ",\"contact_angle\":" + num(a.contact_angle) +
-                ",\"effort_to_limit\":" + num(a.effort_to_limit) + ",\"why\":" + json_string(a.why) + "}";
-       });
-  j += ",\"emphasis\":{\"from\":" + num(f.emphasis_from) + ",\"to\":" + num(f.emphasis_to) + "}";
-  j += ",\"advantage\":{\"load_at\":" + num(f.load_at) + ",\"ma_min\":" + num(f.ma_min) + ",\"ma_max\":" +
-       num(f.ma_max) + ",\"ma_arm_min\":" + num(f.ma_arm_min) + ",\"ma_arm_max\":" + num(f.ma_arm_max) + "}}";
-  j += ",\"rects\":" + list(g.rects, [](const GuideRect& x) {
-         return head(x.guide, x.frame) + ",\"centre\":" + vec(x.centre) + ",\"u\":" + vec(x.u) + ",\"v\":" +
-                vec(x.v) + ",\"normal\":" + vec(x.normal) + ",\"half_u\":" + num(x.half_u) +
-                ",\"half_v\":" + num(x.half_v) + ",\"colour\":" + colour(x.colour) + "}";
-       });
-  j += ",\"meshes\":" + list(g.meshes, [](const GuideMesh& x) {
-         return head(x.guide, x.frame) + ",\"vertices\":" + list(x.vertices, vec) + ",\"triangles\":" +
-                list(x.triangles,
-                     [](const std::array<int, 3>& t) {
-                       return "[" + std::to_string(t[0]) + "," + std::to_string(t[1]) + "," +
-                              std::to_string(t[2]) + "]";
-                     }) +
-                ",\"colour\":" + colour(x.colour) + "}";
-       });
-  j += ",\"segments\":" + list(g.segments, [](const GuideSegment& x) {
-         return head(x.guide, x.frame) + ",\"a\":" + vec(x.a) + ",\"b\":" + vec(x.b) + ",\"colour\":" +
-                colour(x.colour) + ",\"value\":" + num(x.value) + ",\"distance\":" + num(x.distance) + "}";
-       });
-  j += ",\"labels\":" + list(g.labels, [](const GuideLabel& x) {
-         return head(x.guide, x.frame) + ",\"text\":" + json_string(x.text) + ",\"anchor\":" + vec(x.anchor) +
-                ",\"colour\":" + colour(x.colour) + "}";
-       });
-  std::cout << j << "}\n";
+  Json facts = {
+      {"pattern", pattern_name(f.pattern)},
+      {"symmetry_plane", {{"point", vec(f.symmetry_point)}, {"normal", vec(f.symmetry_normal)}}},
+      {"functional_pose",
+       {{"position", vec(f.functional_pose.translation())}, {"rotation", {vec(r.row(0)), vec(r.row(1)), vec(r.row(2))}}}},
+      {"plane_to_gravity", num(f.plane_to_gravity)},
+      {"interaction_space",
+       {{"from", num(f.space.from)}, {"to", num(f.space.to)}, {"gap_from", num(f.space.gap_from)},
+        {"gap_to", num(f.space.gap_to)}}},
+      {"actees", list(f.actees,
+                      [](const ActeeFit& a) {
+                        return Json{{"name", a.name},
+                                    {"fits", a.fits},
+                                    {"from", num(a.from)},
+                                    {"to", num(a.to)},
+                                    {"contact_angle", num(a.contact_angle)},
+                                    {"effort_to_limit", num(a.effort_to_limit)},
+                                    {"why", a.why}};
+                      })},
+      {"emphasis", {{"from", num(f.emphasis_from)}, {"to", num(f.emphasis_to)}}},
+      {"advantage",
+       {{"load_at", num(f.load_at)}, {"ma_min", num(f.ma_min)}, {"ma_max", num(f.ma_max)},
+        {"ma_arm_min", num(f.ma_arm_min)}, {"ma_arm_max", num(f.ma_arm_max)}}}};
+  Json j = {{"object", g.object},
+            {"guides", list(g.guides,
+                            [](const GuideSpec& s) {
+                              return Json{{"name", s.name},
+                                          {"kind", guide_kind_name(s.kind)},
+                                          {"description", s.description},
+                                          {"colour", colour(s.colour)}};
+                            })},
+            {"facts", facts}};
+  j["rects"] = list(g.rects, [](const GuideRect& x) {
+    Json e = head(x.guide, x.frame);
+    e.update(Json{{"centre", vec(x.centre)}, {"u", vec(x.u)}, {"v", vec(x.v)}, {"normal", vec(x.normal)},
+                  {"half_u", num(x.half_u)}, {"half_v", num(x.half_v)}, {"colour", colour(x.colour)}});
+    return e;
+  });
+  j["meshes"] = list(g.meshes, [](const GuideMesh& x) {
+    Json e = head(x.guide, x.frame);
+    e.update(Json{{"vertices", list(x.vertices, vec)}, {"triangles", x.triangles}, {"colour", colour(x.colour)}});
+    return e;
+  });
+  j["segments"] = list(g.segments, [](const GuideSegment& x) {
+    Json e = head(x.guide, x.frame);
+    e.update(Json{{"a", vec(x.a)}, {"b", vec(x.b)}, {"colour", colour(x.colour)}, {"value", num(x.value)},
+                  {"distance", num(x.distance)}});
+    return e;
+  });
+  j["labels"] = list(g.labels, [](const GuideLabel& x) {
+    Json e = head(x.guide, x.frame);
+    e.update(Json{{"text", x.text}, {"anchor", vec(x.anchor)}, {"colour", colour(x.colour)}});
+    return e;
+  });
+  std::cout << j.dump() << "\n";
 }
 
 struct GuideOptions {

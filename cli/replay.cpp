@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "json_output.h"
 #include "option_checks.h"
 #include "recording_source.h"
 #include "run.h"
@@ -20,12 +21,6 @@
 
 namespace afford::cli {
 namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
 
 const char* kEventNames[] = {"node_reached", "node_lost", "inferred"};
 const char* kTailNames[] = {"end", "no_end", "incomplete", "corrupt"};
@@ -39,24 +34,12 @@ void print_inferences(const RunResult& r) {
   std::fflush(stdout);
 }
 
-std::string json_inferences(const RunResult& r) {
-  std::string j = "[";
-  for (size_t i = 0; i < r.inferences.size(); ++i) {
-    const Inference& inf = r.inferences[i];
-    j += (i ? ",{" : "{") + std::string("\"name\":") + json_string(inf.function) + ",\"t\":" + number(inf.t) +
-         ",\"explanation\":[";
-    for (size_t n = 0; n < inf.nodes.size(); ++n) {
-      j += (n ? ",{" : "{") + std::string("\"t\":") + number(inf.nodes[n].t) +
-           ",\"text\":" + json_string(inf.nodes[n].text) + "}";
-    }
-    j += "]}";
-  }
-  return j + "]";
-}
-
-std::string json_event(const NamedEvent& e) {
-  return "\"event\":\"" + std::string(kEventNames[static_cast<int>(e.kind)]) + "\",\"function\":" +
-         json_string(e.function) + ",\"node\":" + std::to_string(e.node) + ",\"text\":" + json_string(e.text);
+// An event's fields, for the diff's entries.
+void add_event(Json& j, const NamedEvent& e) {
+  j["event"] = kEventNames[static_cast<int>(e.kind)];
+  j["function"] = e.function;
+  j["node"] = e.node;
+  j["text"] = e.text;
 }
 
 // The recorded events must name functions and nodes of the recorded rules.
@@ -82,9 +65,6 @@ int replay(const ReplayOptions& o) {
   const CompiledSession session = load_recorded_session(rec);
   check_events(rec, *session.rules);
   const std::vector<std::string> changed = changed_since_recording(rec);
-  std::string json_changed = "[";
-  for (const std::string& f : changed) json_changed += (json_changed.size() > 1 ? "," : "") + json_string(f);
-  json_changed += "]";
   if (!json) {
     std::cout << "recording " << rec.file << ": session " << rec.session_name << " (" << rec.source << "), "
               << rec.summary() << "\n";
@@ -107,16 +87,17 @@ int replay(const ReplayOptions& o) {
     const std::vector<Observer*> observers = with_outputs({&checker});
     const RunResult result = run_session(session.model, *session.rules, source, observers);
     if (json) {
-      std::string j = "{\"recording\":" + json_string(rec.file) + ",\"session\":" + json_string(rec.session_name) +
-                      ",\"frames\":" + std::to_string(result.frames) + ",\"tail\":\"" +
-                      kTailNames[static_cast<int>(rec.tail)] + "\",\"changed_since\":" + json_changed +
-                      ",\"identical\":" +
-                      (checker.identical() ? "true" : "false") + ",\"functions\":" + json_inferences(result);
+      Json j = {{"recording", rec.file},
+                {"session", rec.session_name},
+                {"frames", result.frames},
+                {"tail", kTailNames[static_cast<int>(rec.tail)]},
+                {"changed_since", changed},
+                {"identical", checker.identical()},
+                {"functions", inferences_json(result)}};
       if (!checker.identical()) {
-        j += ",\"first_difference\":{\"frame\":" + std::to_string(checker.first_difference()) +
-             ",\"detail\":" + json_string(checker.describe(*session.rules)) + "}";
+        j["first_difference"] = {{"frame", checker.first_difference()}, {"detail", checker.describe(*session.rules)}};
       }
-      std::cout << j << "}\n";
+      std::cout << j.dump() << "\n";
       return checker.identical() ? 0 : 1;
     }
     print_inferences(result);
@@ -142,20 +123,19 @@ int replay(const ReplayOptions& o) {
   const TimelineDiff diff = diff_timelines(recorded, rerun.named(*rules));
 
   if (json) {
-    std::string j = "{\"recording\":" + json_string(rec.file) + ",\"rules\":" + json_string(rules_file) +
-                    ",\"frames\":" + std::to_string(result.frames) + ",\"functions\":" + json_inferences(result) +
-                    ",\"same\":" + std::to_string(diff.same) + ",\"diff\":[";
-    for (size_t i = 0; i < diff.changes.size(); ++i) {
-      const TimelineChange& c = diff.changes[i];
+    Json changes = Json::array();
+    for (const TimelineChange& c : diff.changes) {
       static const char* kChange[] = {"only_recorded", "only_rerun", "shifted"};
-      const NamedEvent& e = c.kind == TimelineChange::added ? c.after : c.before;
-      j += (i ? ",{" : "{") + std::string("\"change\":\"") + kChange[c.kind] + "\"," + json_event(e);
-      if (c.kind != TimelineChange::added) j += ",\"recorded_t\":" + number(c.before.t);
-      if (c.kind != TimelineChange::removed) j += ",\"rerun_t\":" + number(c.after.t);
-      j += "}";
+      Json entry = {{"change", kChange[c.kind]}};
+      add_event(entry, c.kind == TimelineChange::added ? c.after : c.before);
+      if (c.kind != TimelineChange::added) entry["recorded_t"] = json_number(c.before.t);
+      if (c.kind != TimelineChange::removed) entry["rerun_t"] = json_number(c.after.t);
+      changes.push_back(std::move(entry));
     }
-    j += std::string("],\"same_state\":") + (physics.identical() ? "true" : "false") + "}";
-    std::cout << j << "\n";
+    const Json j = {{"recording", rec.file},       {"rules", rules_file},   {"frames", result.frames},
+                    {"functions", inferences_json(result)}, {"same", diff.same}, {"diff", changes},
+                    {"same_state", physics.identical()}};
+    std::cout << j.dump() << "\n";
     return 0;
   }
   std::cout << "re-ran " << result.frames << " frames under " << rules_file << "\n";

@@ -18,6 +18,7 @@
 #include "run.h"
 #include "scripted_agent.h"
 #include "session.h"
+#include "json_output.h"
 #include "session_outputs.h"
 #include "trace.h"
 
@@ -45,19 +46,8 @@ void print_text(const CompiledSession& s, const RunResult& r, const std::string&
 }
 
 void print_json(const CompiledSession& s, const RunResult& r) {
-  std::string j = "{\"session\":" + json_string(s.name) + ",\"functions\":[";
-  for (size_t i = 0; i < r.inferences.size(); ++i) {
-    const Inference& inf = r.inferences[i];
-    j += (i ? ",{" : "{") + std::string("\"name\":") + json_string(inf.function) + ",\"t\":" + number(inf.t) +
-         ",\"explanation\":[";
-    for (size_t n = 0; n < inf.nodes.size(); ++n) {
-      j += (n ? ",{" : "{") + std::string("\"t\":") + number(inf.nodes[n].t) +
-           ",\"text\":" + json_string(inf.nodes[n].text) + "}";
-    }
-    j += "]}";
-  }
-  j += "],\"frames\":" + std::to_string(r.frames) + "}";
-  std::cout << j << "\n";
+  const Json j = {{"session", s.name}, {"functions", inferences_json(r)}, {"frames", r.frames}};
+  std::cout << j.dump() << "\n";
 }
 
 // Runs a compiled session once: writes the timeline and the trace, prints

@@ -269,6 +269,14 @@ TEST(GapErrors, ACellThatIsNotANumberNamesItsRowAndColumn) {
               HasSubstr("t.csv:2:"));
 }
 
+TEST(GapErrors, CommentLinesBeforeTheHeaderAreSkippedAndRowsKeepTheirFileLines) {
+  // afford's own trace.csv starts with its units as a comment.
+  std::string csv = "# units: t s, angle rad\n# a second comment\n" + good_csv();
+  csv.replace(csv.find("0.3,5"), 5, "0.3,x5");
+  EXPECT_THAT(measurement_error(kHead + "effort_at: 160 mm\ntrace: t.csv\n", csv),
+              HasSubstr("t.csv:4:14: expected a number, found 'x5'"));
+}
+
 TEST(GapErrors, TimeMustIncrease) {
   std::string csv = good_csv();
   csv.replace(csv.find("\n0.002000"), 9, "\n0.000500");
