@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "option_checks.h"
 #include "errors.h"
 #include "device_description.h"
 #include "measurement.h"
@@ -27,15 +28,12 @@ std::string check_rule_test(const Node& root) {
   return "rule test " + c.name;
 }
 
-}  // namespace
-
-int run_check(const Args& args) {
-  if (args.empty()) return usage_error("check needs at least one FILE");
+int check_files(const std::vector<std::string>& files) {
   add_file_kind("device", check_device);  // device descriptions live in devices/
   add_file_kind("measurement", check_measurement);  // and measurements in gap/
   add_file_kind("test", check_rule_test);  // rule tests live in tests/rules/
   int errors = 0;
-  for (const std::string& path : args) {
+  for (const std::string& path : files) {
     try {
       const std::string what = validate_file(path);  // before printing: it may throw
       std::cout << path << ": ok (" << what << ")\n";
@@ -45,6 +43,15 @@ int run_check(const Args& args) {
     }
   }
   return errors == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void add_check(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand("check", "validate object, actee, agent, session, rules and other files");
+  auto files = std::make_shared<std::vector<std::string>>();
+  cmd->add_option("FILE", *files, "a file to validate (any kind afford reads)")->required()->type_name(kFile);
+  cmd->callback([run, files] { *run = [files] { return check_files(*files); }; });
 }
 
 }  // namespace afford::cli

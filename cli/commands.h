@@ -1,32 +1,32 @@
-// The afford command-line program: one function per subcommand.
+// The afford command-line program: one file per subcommand. Each declares
+// its options and arguments on its own CLI11 subcommand (add_<name>), so
+// that --help, the bash completion and the man page all come from the same
+// declarations; when the command line names it, *run becomes the command
+// with the parsed values.
 #pragma once
 
+#include <functional>
 #include <string>
-#include <vector>
+
+#include <CLI/CLI.hpp>
 
 namespace afford::cli {
 
-using Args = std::vector<std::string>;
+// The parsed command, ready to run: returns the exit status.
+using Run = std::function<int()>;
 
-struct Command {
-  const char* name;
-  const char* usage;    // "check FILE..."
-  const char* summary;  // one line
-  int (*run)(const Args& args);
-};
-
-const std::vector<Command>& commands();
-
-int run_check(const Args& args);
-int run_describe(const Args& args);
-int run_gap(const Args& args);
-int run_guide(const Args& args);
-int run_live(const Args& args);
-int run_run(const Args& args);
-int run_replay(const Args& args);
-int run_render(const Args& args);
-int run_rules(const Args& args);
-int run_test(const Args& args);
+void add_check(CLI::App& app, Run* run);
+void add_describe(CLI::App& app, Run* run);
+void add_gap(CLI::App& app, Run* run);
+void add_render(CLI::App& app, Run* run);
+void add_guide(CLI::App& app, Run* run);
+void add_rules(CLI::App& app, Run* run);
+void add_run(CLI::App& app, Run* run);
+void add_live(CLI::App& app, Run* run);
+void add_replay(CLI::App& app, Run* run);
+void add_schema(CLI::App& app, Run* run);
+void add_test(CLI::App& app, Run* run);
+void add_completion(CLI::App& app, Run* run);
 
 // Prints "afford: <message>" to stderr and returns the exit status 2.
 int usage_error(const std::string& message);

@@ -1,7 +1,8 @@
 // afford describe FILE: what the model derives from an object file (lever
 // pattern, mechanical advantage along the arm, interaction space, which
 // actees fit, spring force at each limit); `--effects` lists the optional
-// torque terms.
+// torque terms. The actees are the shipped ones (data_dir.h) unless
+// --actees names a folder.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,8 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "data_dir.h"
+#include "option_checks.h"
 #include "derive.h"
 #include "effects.h"
 #include "lever.h"
@@ -104,26 +107,19 @@ void describe_object(const ObjectSpec& o, const std::string& actee_dir) {
   }
 }
 
-}  // namespace
-
-int run_describe(const Args& args) {
+struct DescribeOptions {
   std::string file, actee_dir;
-  bool actees_given = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--effects") {
-      describe_effects();
-      return 0;
-    }
-    if (args[i] == "--actees") {
-      if (i + 1 >= args.size()) return usage_error("--actees needs a DIR");
-      actee_dir = args[++i];
-      actees_given = true;
-    } else if (file.empty()) {
-      file = args[i];
-    } else {
-      return usage_error("describe takes one FILE");
-    }
+  bool effects = false;
+};
+
+int describe(const DescribeOptions& o) {
+  if (o.effects) {
+    describe_effects();
+    return 0;
   }
+  const std::string& file = o.file;
+  std::string actee_dir = o.actee_dir;
+  const bool actees_given = !actee_dir.empty();
   if (file.empty()) return usage_error("describe needs a FILE (or --effects)");
   const Node root = load_yaml_file(file);
   const std::string kind = file_kind(root);
@@ -133,12 +129,24 @@ int run_describe(const Args& args) {
     throw std::runtime_error("--actees " + actee_dir + ": not a readable directory");
   }
   if (!actees_given) {
-    // The shipped actees sit beside the objects folder.
-    actee_dir = (std::filesystem::path(file).parent_path().parent_path() / "actees").string();
-    if (actee_dir == "actees" || !std::filesystem::is_directory(actee_dir)) actee_dir = "actees";
+    actee_dir = shipped_path("actees");  // data_dir.h, wherever the object is
   }
   describe_object(read_object(root), actee_dir);
   return 0;
+}
+
+}  // namespace
+
+void add_describe(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand(
+      "describe", "what the model derives from an object file: lever, advantage, interaction space, fits");
+  auto o = std::make_shared<DescribeOptions>();
+  CLI::Option* file = cmd->add_option("FILE", o->file, "an object file (objects/*.yaml)")->type_name(kFile);
+  cmd->add_option("--actees", o->actee_dir, "the folder of actees to fit (default: the shipped actees)")
+      ->type_name(kDir);
+  cmd->add_flag("--effects", o->effects, "list the optional effects a file can switch on, instead of a FILE")
+      ->excludes(file);
+  cmd->callback([run, o] { *run = [o] { return describe(*o); }; });
 }
 
 }  // namespace afford::cli

@@ -1,4 +1,4 @@
-// afford gap MEASUREMENT [--json] [--effects a,b,...] [--write-patch DIR] [--probe]:
+// afford gap MEASUREMENT [--json] [--effects a,b,...] [--out DIR] [--write-patch DIR] [--probe]:
 // where and why the nominal model differs from the measured tool, which
 // effect of the library explains it, and how far the gap shrinks on data
 // the fit never saw (gap/README.md). With --probe: the lever and spring
@@ -7,9 +7,11 @@
 #include <iostream>
 
 #include "commands.h"
+#include "option_checks.h"
 #include "did_you_mean.h"
 #include "diagnose.h"
 #include "patch.h"
+#include "plots.h"
 #include "probe.h"
 #include "report.h"
 
@@ -27,7 +29,7 @@ bool parse_library(const std::string& list, std::vector<EffectKind>* out, std::s
     const std::string name = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     const EffectManifest* e = find_effect(name);
     if (e == nullptr) {
-      *error = "--effects: unknown effect '" + name + "'" + did_you_mean(name, names);
+      *error = "unknown effect '" + name + "'" + did_you_mean(name, names);
       return false;
     }
     out->push_back(e->kind);
@@ -37,33 +39,30 @@ bool parse_library(const std::string& list, std::vector<EffectKind>* out, std::s
   return true;
 }
 
-}  // namespace
+// Checks an --effects list as CLI11 reads it.
+CLI::Validator effect_list() {
+  return CLI::Validator(
+      [](std::string& list) {
+        std::vector<EffectKind> kinds;
+        std::string error;
+        return parse_library(list, &kinds, &error) ? std::string() : error;
+      },
+      "");  // no description: the help line says what is allowed
+}
 
-int run_gap(const Args& args) {
-  std::string file, patch_dir;
+struct GapOptions {
+  std::string file, patch_dir, out_dir, effects;
   bool json = false, probe = false;
+};
+
+int gap(const GapOptions& o) {
+  const std::string& file = o.file;
+  const std::string& patch_dir = o.patch_dir;
   DiagnoseOptions options;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--json") {
-      json = true;
-    } else if (args[i] == "--probe") {
-      probe = true;
-    } else if (args[i] == "--effects") {
-      if (i + 1 >= args.size()) return usage_error("--effects needs a list of effects, e.g. pivot_friction,arm_inertia");
-      std::string error;
-      if (!parse_library(args[++i], &options.library, &error)) return usage_error(error);
-    } else if (args[i] == "--write-patch") {
-      if (i + 1 >= args.size()) return usage_error("--write-patch needs a DIR");
-      patch_dir = args[++i];
-    } else if (file.empty() && args[i].rfind("--", 0) != 0) {
-      file = args[i];
-    } else {
-      return usage_error("gap: unexpected '" + args[i] + "'; usage: afford gap MEASUREMENT [--json] [--effects a,b] [--write-patch DIR] [--probe]");
-    }
-  }
-  if (file.empty()) return usage_error("gap needs a MEASUREMENT file");
+  std::string error;
+  if (!o.effects.empty() && !parse_library(o.effects, &options.library, &error)) return usage_error(error);
   const Measurement m = load_measurement(file);
-  if (probe) {  // active modelling: the lever and spring from a probing trace
+  if (o.probe) {  // active modelling: the lever and spring from a probing trace
     const ProbeResult p = probe_lever(m);
     std::cout << probe_text(p);
     if (!patch_dir.empty()) {
@@ -75,11 +74,33 @@ int run_gap(const Args& args) {
     return 0;
   }
   const Diagnosis d = diagnose(m, options);
-  std::cout << (json ? report_json(d) + "\n" : report_text(d));
+  std::cout << (o.json ? report_json(d) + "\n" : report_text(d));
+  if (!o.out_dir.empty()) {
+    for (const std::string& written : write_gap_plots(d, o.out_dir)) std::cerr << "wrote " << written << "\n";
+  }
   if (!patch_dir.empty()) {
     for (const std::string& written : write_patch(m, d, patch_dir)) std::cerr << "wrote " << written << "\n";
   }
   return 0;
+}
+
+}  // namespace
+
+void add_gap(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand(
+      "gap", "where a measured tool differs from its model, which effect explains it, how far the gap shrinks");
+  auto o = std::make_shared<GapOptions>();
+  cmd->add_option("MEASUREMENT", o->file, "a measurement file (gap/README.md)")->required()->type_name(kFile);
+  cmd->add_flag("--json", o->json, "print the diagnosis as JSON");
+  cmd->add_option("--effects", o->effects, "the effects to try, comma-separated (default: every one)")
+      ->type_name("NAME,...")
+      ->check(effect_list());
+  cmd->add_option("--out", o->out_dir, "write plots into DIR: the residual over time, the force-angle loop (SVG, PNG)")
+      ->type_name(kDir);
+  cmd->add_option("--write-patch", o->patch_dir, "write the fitted effects (or the probed object) into DIR")
+      ->type_name(kDir);
+  cmd->add_flag("--probe", o->probe, "fit the lever and spring from a probing trace instead");
+  cmd->callback([run, o] { *run = [o] { return gap(*o); }; });
 }
 
 }  // namespace afford::cli

@@ -1,18 +1,21 @@
 // afford guide OBJECT [--actees DIR] [--guides FILE] [--json]: the guides of
 // the paper (Sec. 4.4) for an object, computed as rules/guides.yaml says:
 // as text, or as one JSON object (SI units, the object frame) holding the
-// facts and the geometry a renderer draws.
+// facts and the geometry a renderer draws. The actees and the guides are
+// the shipped ones (data_dir.h) unless --actees or --guides names others.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "commands.h"
+#include "data_dir.h"
+#include "option_checks.h"
 #include "guides.h"
+#include "json_output.h"
 #include "lever.h"
 #include "load.h"
 #include "model.h"
-#include "trace.h"
 
 namespace afford::cli {
 namespace {
@@ -145,110 +148,99 @@ void print_text(const Guides& g, const std::string& guides_file, const std::stri
 
 // ---------------------------------------------------------------- JSON
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", std::abs(v) < 1e-15 ? 0.0 : v);
-  return buf;
-}
+// Rounding noise below 1e-15 is printed as 0.
+Json num(double v) { return json_number(std::abs(v) < 1e-15 ? 0.0 : v); }
 
-std::string vec(const Eigen::Vector3d& v) { return "[" + num(v.x()) + "," + num(v.y()) + "," + num(v.z()) + "]"; }
+Json vec(const Eigen::Vector3d& v) { return {num(v.x()), num(v.y()), num(v.z())}; }
 
-std::string colour(const GuideColour& c) {
-  return "[" + num(c.r) + "," + num(c.g) + "," + num(c.b) + "," + num(c.a) + "]";
-}
+Json colour(const GuideColour& c) { return {num(c.r), num(c.g), num(c.b), num(c.a)}; }
 
-std::string head(int guide, Arm frame) {
-  return "{\"guide\":" + std::to_string(guide) + ",\"frame\":\"" + (frame == Arm::fixed ? "fixed" : "moving") + "\"";
-}
+// The fields every drawn element starts with.
+Json head(int guide, Arm frame) { return {{"guide", guide}, {"frame", frame == Arm::fixed ? "fixed" : "moving"}}; }
 
 template <typename T, typename F>
-std::string list(const std::vector<T>& items, F item) {
-  std::string j = "[";
-  for (size_t i = 0; i < items.size(); ++i) j += (i ? "," : "") + item(items[i]);
-  return j + "]";
+Json list(const std::vector<T>& items, F item) {
+  Json j = Json::array();
+  for (const T& x : items) j.push_back(item(x));
+  return j;
 }
 
 void print_json(const Guides& g) {
   const GuideFacts& f = g.facts;
-  std::string j = "{\"object\":" + json_string(g.object);
-  j += ",\"guides\":" + list(g.guides, [](const GuideSpec& s) {
-         return "{\"name\":" + json_string(s.name) + ",\"kind\":\"" + guide_kind_name(s.kind) +
-                "\",\"description\":" + json_string(s.description) + ",\"colour\":" + colour(s.colour) + "}";
-       });
   const Eigen::Matrix3d r = f.functional_pose.linear();
-  j += ",\"facts\":{\"pattern\":\"" + std::string(pattern_name(f.pattern)) + "\"";
-  j += ",\"symmetry_plane\":{\"point\":" + vec(f.symmetry_point) + ",\"normal\":" + vec(f.symmetry_normal) + "}";
-  j += ",\"functional_pose\":{\"position\":" + vec(f.functional_pose.translation()) + ",\"rotation\":[" +
-       vec(r.row(0)) + "," + vec(r.row(1)) + "," + vec(r.row(2)) + "]}";
-  j += ",\"plane_to_gravity\":" + num(f.plane_to_gravity);
-  j += ",\"interaction_space\":{\"from\":" + num(f.space.from) + ",\"to\":" + num(f.space.to) +
-       ",\"gap_from\":" + num(f.space.gap_from) + ",\"gap_to\":" + num(f.space.gap_to) + "}";
-  j += ",\"actees\":" + list(f.actees, [](const ActeeFit& a) {
-         return "{\"name\":" + json_string(a.name) + ",\"fits\":" + (a.fits ? "true" : "false") +
-                ",\"from\":" + num(a.from) + ",\"to\":" + num(a.to) + ",\"contact_angle\":" + num(a.contact_angle) +
-                ",\"effort_to_limit\":" + num(a.effort_to_limit) + ",\"why\":" + json_string(a.why) + "}";
-       });
-  j += ",\"emphasis\":{\"from\":" + num(f.emphasis_from) + ",\"to\":" + num(f.emphasis_to) + "}";
-  j += ",\"advantage\":{\"load_at\":" + num(f.load_at) + ",\"ma_min\":" + num(f.ma_min) + ",\"ma_max\":" +
-       num(f.ma_max) + ",\"ma_arm_min\":" + num(f.ma_arm_min) + ",\"ma_arm_max\":" + num(f.ma_arm_max) + "}}";
-  j += ",\"rects\":" + list(g.rects, [](const GuideRect& x) {
-         return head(x.guide, x.frame) + ",\"centre\":" + vec(x.centre) + ",\"u\":" + vec(x.u) + ",\"v\":" +
-                vec(x.v) + ",\"normal\":" + vec(x.normal) + ",\"half_u\":" + num(x.half_u) +
-                ",\"half_v\":" + num(x.half_v) + ",\"colour\":" + colour(x.colour) + "}";
-       });
-  j += ",\"meshes\":" + list(g.meshes, [](const GuideMesh& x) {
-         return head(x.guide, x.frame) + ",\"vertices\":" + list(x.vertices, vec) + ",\"triangles\":" +
-                list(x.triangles,
-                     [](const std::array<int, 3>& t) {
-                       return "[" + std::to_string(t[0]) + "," + std::to_string(t[1]) + "," +
-                              std::to_string(t[2]) + "]";
-                     }) +
-                ",\"colour\":" + colour(x.colour) + "}";
-       });
-  j += ",\"segments\":" + list(g.segments, [](const GuideSegment& x) {
-         return head(x.guide, x.frame) + ",\"a\":" + vec(x.a) + ",\"b\":" + vec(x.b) + ",\"colour\":" +
-                colour(x.colour) + ",\"value\":" + num(x.value) + ",\"distance\":" + num(x.distance) + "}";
-       });
-  j += ",\"labels\":" + list(g.labels, [](const GuideLabel& x) {
-         return head(x.guide, x.frame) + ",\"text\":" + json_string(x.text) + ",\"anchor\":" + vec(x.anchor) +
-                ",\"colour\":" + colour(x.colour) + "}";
-       });
-  std::cout << j << "}\n";
+  Json facts = {
+      {"pattern", pattern_name(f.pattern)},
+      {"symmetry_plane", {{"point", vec(f.symmetry_point)}, {"normal", vec(f.symmetry_normal)}}},
+      {"functional_pose",
+       {{"position", vec(f.functional_pose.translation())}, {"rotation", {vec(r.row(0)), vec(r.row(1)), vec(r.row(2))}}}},
+      {"plane_to_gravity", num(f.plane_to_gravity)},
+      {"interaction_space",
+       {{"from", num(f.space.from)}, {"to", num(f.space.to)}, {"gap_from", num(f.space.gap_from)},
+        {"gap_to", num(f.space.gap_to)}}},
+      {"actees", list(f.actees,
+                      [](const ActeeFit& a) {
+                        return Json{{"name", a.name},
+                                    {"fits", a.fits},
+                                    {"from", num(a.from)},
+                                    {"to", num(a.to)},
+                                    {"contact_angle", num(a.contact_angle)},
+                                    {"effort_to_limit", num(a.effort_to_limit)},
+                                    {"why", a.why}};
+                      })},
+      {"emphasis", {{"from", num(f.emphasis_from)}, {"to", num(f.emphasis_to)}}},
+      {"advantage",
+       {{"load_at", num(f.load_at)}, {"ma_min", num(f.ma_min)}, {"ma_max", num(f.ma_max)},
+        {"ma_arm_min", num(f.ma_arm_min)}, {"ma_arm_max", num(f.ma_arm_max)}}}};
+  Json j = {{"object", g.object},
+            {"guides", list(g.guides,
+                            [](const GuideSpec& s) {
+                              return Json{{"name", s.name},
+                                          {"kind", guide_kind_name(s.kind)},
+                                          {"description", s.description},
+                                          {"colour", colour(s.colour)}};
+                            })},
+            {"facts", facts}};
+  j["rects"] = list(g.rects, [](const GuideRect& x) {
+    Json e = head(x.guide, x.frame);
+    e.update(Json{{"centre", vec(x.centre)}, {"u", vec(x.u)}, {"v", vec(x.v)}, {"normal", vec(x.normal)},
+                  {"half_u", num(x.half_u)}, {"half_v", num(x.half_v)}, {"colour", colour(x.colour)}});
+    return e;
+  });
+  j["meshes"] = list(g.meshes, [](const GuideMesh& x) {
+    Json e = head(x.guide, x.frame);
+    e.update(Json{{"vertices", list(x.vertices, vec)}, {"triangles", x.triangles}, {"colour", colour(x.colour)}});
+    return e;
+  });
+  j["segments"] = list(g.segments, [](const GuideSegment& x) {
+    Json e = head(x.guide, x.frame);
+    e.update(Json{{"a", vec(x.a)}, {"b", vec(x.b)}, {"colour", colour(x.colour)}, {"value", num(x.value)},
+                  {"distance", num(x.distance)}});
+    return e;
+  });
+  j["labels"] = list(g.labels, [](const GuideLabel& x) {
+    Json e = head(x.guide, x.frame);
+    e.update(Json{{"text", x.text}, {"anchor", vec(x.anchor)}, {"colour", colour(x.colour)}});
+    return e;
+  });
+  std::cout << j.dump() << "\n";
 }
 
-// A data folder beside the object's folder (objects/../NAME), else NAME
-// relative to the working directory.
-std::string beside_objects(const std::string& object_file, const std::string& name) {
-  const std::filesystem::path p = std::filesystem::path(object_file).parent_path().parent_path() / name;
-  return std::filesystem::exists(p) ? p.string() : name;
-}
-
-}  // namespace
-
-int run_guide(const Args& args) {
+struct GuideOptions {
   std::string file, actee_dir, guides_file;
   bool json = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--json") {
-      json = true;
-    } else if (args[i] == "--actees" || args[i] == "--guides") {
-      if (i + 1 >= args.size()) return usage_error(args[i] + (args[i] == "--actees" ? " needs a DIR" : " needs a FILE"));
-      (args[i] == "--actees" ? actee_dir : guides_file) = args[i + 1];
-      ++i;
-    } else if (args[i].starts_with("--")) {
-      return usage_error("guide: unknown option '" + args[i] + "'");
-    } else if (file.empty()) {
-      file = args[i];
-    } else {
-      return usage_error("guide takes one OBJECT file");
-    }
-  }
-  if (file.empty()) return usage_error("guide needs an OBJECT file");
+};
+
+int guide(GuideOptions o) {
+  const std::string& file = o.file;
+  std::string& actee_dir = o.actee_dir;
+  std::string& guides_file = o.guides_file;
+  const bool json = o.json;
   const Node root = load_yaml_file(file);
   const std::string kind = file_kind(root);
   if (kind != "object") return usage_error("guide reads object files; " + file + " is a " + kind + " file");
-  if (actee_dir.empty()) actee_dir = beside_objects(file, "actees");
-  if (guides_file.empty()) guides_file = (std::filesystem::path(beside_objects(file, "rules")) / "guides.yaml").string();
+  // Unless named, the shipped ones (data_dir.h), wherever the object is.
+  if (actee_dir.empty()) actee_dir = shipped_path("actees");
+  if (guides_file.empty()) guides_file = shipped_path("rules/guides.yaml");
   if (!actee_dir.empty() && !std::filesystem::is_directory(actee_dir)) {
     return usage_error("--actees: '" + actee_dir + "' is not a directory");
   }
@@ -264,6 +256,21 @@ int run_guide(const Args& args) {
     print_text(guides, guides_file, actee_dir);
   }
   return 0;
+}
+
+}  // namespace
+
+void add_guide(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand(
+      "guide", "the four guides (symmetry, actee, emphasis, amplify/decline) of an object, as text or JSON");
+  auto o = std::make_shared<GuideOptions>();
+  cmd->add_option("OBJECT", o->file, "an object file (objects/*.yaml)")->required()->type_name(kFile);
+  cmd->add_option("--actees", o->actee_dir, "the folder of actees to fit (default: the shipped actees)")
+      ->type_name(kDir);
+  cmd->add_option("--guides", o->guides_file, "the guides file (default: the shipped rules/guides.yaml)")
+      ->type_name(kFile);
+  cmd->add_flag("--json", o->json, "print the guides as JSON");
+  cmd->callback([run, o] { *run = [o] { return guide(*o); }; });
 }
 
 }  // namespace afford::cli

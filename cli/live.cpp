@@ -20,6 +20,7 @@
 #include <optional>
 
 #include "commands.h"
+#include "option_checks.h"
 #include "session_outputs.h"
 #include "recording.h"
 #include "report_decoder.h"
@@ -46,47 +47,17 @@ class EventPrinter : public Observer {
   }
 };
 
-double parse_seconds(const std::string& s, const char* option, bool* ok) {
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  *ok = end != nullptr && *end == '\0' && v > 0 && v < 1e9;
-  if (!*ok) usage_error(std::string(option) + " needs a number of seconds above 0, got '" + s + "'");
-  return v;
-}
-
-}  // namespace
-
-int run_live(const Args& args) {
+struct LiveOptions {
   std::string file, device_file, record, out_dir;
   double duration = std::numeric_limits<double>::infinity(), wait = 0, silence = 2;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool has_value = i + 1 < args.size();
-    bool ok = true;
-    if (a == "--device") {
-      if (!has_value) return usage_error("--device needs a device description (devices/*.yaml)");
-      device_file = args[++i];
-    } else if (a == "--out") {
-      if (!has_value) return usage_error("--out needs a DIR");
-      out_dir = args[++i];
-    } else if (a == "--record") {
-      if (!has_value) return usage_error("--record needs a FILE");
-      record = args[++i];
-    } else if (a == "--duration" || a == "--wait" || a == "--silence") {
-      if (!has_value) return usage_error(a + " needs a number of seconds");
-      const double v = parse_seconds(args[++i], a.c_str(), &ok);
-      if (!ok) return 2;
-      (a == "--duration" ? duration : a == "--wait" ? wait : silence) = v;
-    } else if (!a.empty() && a[0] == '-') {
-      return usage_error("live: unknown option '" + a + "'");
-    } else if (file.empty()) {
-      file = a;
-    } else {
-      return usage_error("live takes one SESSION file");
-    }
-  }
-  if (file.empty()) return usage_error("live needs a SESSION file");
-  if (device_file.empty()) return usage_error("live needs --device DEV.yaml (devices/glove.yaml, ...)");
+};
+
+int live(const LiveOptions& o) {
+  const std::string& file = o.file;
+  const std::string& device_file = o.device_file;
+  const std::string& out_dir = o.out_dir;
+  std::string record = o.record;
+  const double duration = o.duration, wait = o.wait, silence = o.silence;
 
   const CompiledSession session = load_session(file);              // DataError: file:line:col
   const DeviceDescription device = load_device_description(device_file);
@@ -159,6 +130,34 @@ int run_live(const Args& args) {
   }
   std::printf("wrote %s\n", outputs.written().c_str());
   return 0;
+}
+
+}  // namespace
+
+void add_live(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand(
+      "live", "run a session in real time against a USB device: functions as they happen, force feedback");
+  auto o = std::make_shared<LiveOptions>();
+  cmd->add_option("SESSION", o->file, "a session file: the model and function models (not its script)")
+      ->required()
+      ->type_name(kFile);
+  cmd->add_option("--device", o->device_file, "the device description (devices/*.yaml)")
+      ->required()
+      ->type_name(kFile);
+  cmd->add_option("--duration", o->duration, "stop after S seconds (default: until the device ends or Ctrl-C)")
+      ->type_name("S")
+      ->check(seconds_above_zero());
+  cmd->add_option("--wait", o->wait, "wait up to S seconds for the device to appear")
+      ->type_name("S")
+      ->check(seconds_above_zero());
+  cmd->add_option("--silence", o->silence, "end when the device sends nothing for S seconds")
+      ->type_name("S")
+      ->check(seconds_above_zero())
+      ->capture_default_str();
+  cmd->add_option("--record", o->record, "the recording (default DIR/live.afrec)")->type_name(kFile);
+  cmd->add_option("--out", o->out_dir, "the folder of timeline.jsonl and trace.csv (default out/<session>)")
+      ->type_name(kDir);
+  cmd->callback([run, o] { *run = [o] { return live(*o); }; });
 }
 
 }  // namespace afford::cli

@@ -3,7 +3,8 @@
 // second of session time (default 30), a contact sheet of the key moments,
 // the timeline plot (PNG and SVG) and, when ffmpeg is on PATH, an MP4.
 // --guides draws the guides of FILE (default: guides.yaml beside the
-// session's function models, rules/guides.yaml) in every picture.
+// session's function models, else the shipped rules/guides.yaml) in every
+// picture.
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -11,6 +12,8 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "data_dir.h"
+#include "option_checks.h"
 #include "progress.h"
 #include "derive.h"
 #include "guides.h"
@@ -21,7 +24,8 @@ namespace afford::cli {
 
 namespace {
 
-// guides.yaml in the folder of a file the session read (its rules/ folder).
+// guides.yaml in the folder of a file the session read (its rules/ folder),
+// else the shipped one (data_dir.h).
 std::string default_guides(const CompiledSession& s) {
   namespace fs = std::filesystem;
   for (const std::string& f : s.files) {
@@ -29,55 +33,24 @@ std::string default_guides(const CompiledSession& s) {
     std::error_code ec;
     if (fs::is_regular_file(p, ec)) return p.string();
   }
-  return "rules/guides.yaml";
+  return shipped_path("rules/guides.yaml");
 }
 
-}  // namespace
-
-int run_render(const Args& args) {
-  std::string file, guides_file;
-  bool guides = false;
+struct RenderOptions {
+  std::string file, guides_file, size;
+  bool guides = false, no_frames = false;
   render::RenderSessionOptions o;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--out") {
-      if (i + 1 >= args.size()) return usage_error("--out needs a DIR");
-      o.out_dir = args[++i];
-    } else if (a == "--fps") {
-      if (i + 1 >= args.size()) return usage_error("--fps needs a number");
-      char* end = nullptr;
-      o.fps = std::strtod(args[++i].c_str(), &end);
-      if (end == args[i].c_str() || *end != '\0' || !(o.fps > 0) || o.fps > 1000) {
-        return usage_error("--fps needs a number of frames per second in (0, 1000], found '" + args[i] + "'");
-      }
-    } else if (a == "--size") {
-      if (i + 1 >= args.size()) return usage_error("--size needs WxH");
-      int w = 0, h = 0;
-      char tail = 0;
-      if (std::sscanf(args[++i].c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 64 || h < 48 || w > 3840 ||
-          h > 2160) {
-        return usage_error("--size needs WxH between 64x48 and 3840x2160, found '" + args[i] + "'");
-      }
-      o.width = w;
-      o.height = h;
-    } else if (a == "--guides") {
-      guides = true;
-      if (i + 1 < args.size() && args[i + 1].ends_with(".yaml") && !file.empty()) guides_file = args[++i];
-    } else if (a == "--no-frames") {
-      o.frames = false;
-    } else if (!a.empty() && a[0] == '-') {
-      return usage_error("render: unknown option '" + a + "'");
-    } else if (file.empty()) {
-      file = a;
-    } else {
-      return usage_error("render takes one SESSION file");
-    }
-  }
-  if (file.empty()) return usage_error("render needs a SESSION file");
+};
+
+int render_command(RenderOptions ro) {
+  render::RenderSessionOptions& o = ro.o;
+  const std::string& file = ro.file;
+  std::string& guides_file = ro.guides_file;
+  read_size(ro.size, &o.width, &o.height);
   const CompiledSession session = load_session(file);  // DataError: file:line:col, exit 1
   if (o.out_dir.empty()) o.out_dir = "out/" + session.name + "/render";
   Guides computed;
-  if (guides) {
+  if (ro.guides) {
     if (guides_file.empty()) guides_file = default_guides(session);
     std::vector<ActeeFit> fits;
     if (session.model.has_actee) fits.push_back(fit_actee(session.model));
@@ -99,6 +72,38 @@ int run_render(const Args& args) {
               r.files.empty() || r.files.back().ends_with(".mp4") ? ", session.mp4" : "");
   if (!r.note.empty()) std::printf("%s\n", r.note.c_str());
   return 0;
+}
+
+}  // namespace
+
+void add_render(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand(
+      "render", "render a session offscreen: PNG frames, contact sheet, timeline plot, MP4 with ffmpeg");
+  auto r = std::make_shared<RenderOptions>();
+  cmd->add_option("SESSION", r->file, "a session file (sessions/*.yaml), required")->type_name(kFile);
+  cmd->add_option("--out", r->o.out_dir, "the folder of the pictures (default out/<session>/render)")
+      ->type_name(kDir);
+  cmd->add_option("--fps", r->o.fps, "frames per second of session time, up to 1000")
+      ->type_name("N")
+      ->check(frames_per_second())
+      ->capture_default_str();
+  r->size = std::to_string(r->o.width) + "x" + std::to_string(r->o.height);
+  cmd->add_option("--size", r->size, "picture size in pixels, from 64x48 to 3840x2160")
+      ->type_name("WxH")
+      ->check(picture_size())->capture_default_str();
+  cmd->add_option("--guides", r->guides_file,
+                  "draw the guides of FILE (default: guides.yaml beside the session's function models)")
+      ->expected(0, 1)
+      ->type_name(kFile);
+  cmd->add_flag("--no-frames", r->no_frames, "write the contact sheet and the plots, not the frames");
+  cmd->callback([run, r, cmd] {
+    r->guides = cmd->count("--guides") > 0;
+    r->o.frames = !r->no_frames;
+    // "render --guides S.yaml": the file was the session, not guides.
+    if (r->file.empty()) std::swap(r->file, r->guides_file);
+    if (r->file.empty()) throw CLI::RequiredError("SESSION");
+    *run = [r] { return render_command(*r); };
+  });
 }
 
 }  // namespace afford::cli

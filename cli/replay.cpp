@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "commands.h"
+#include "json_output.h"
+#include "option_checks.h"
 #include "recording_source.h"
 #include "run.h"
 #include "session_outputs.h"
@@ -19,12 +21,6 @@
 
 namespace afford::cli {
 namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
 
 const char* kEventNames[] = {"node_reached", "node_lost", "inferred"};
 const char* kTailNames[] = {"end", "no_end", "incomplete", "corrupt"};
@@ -38,24 +34,12 @@ void print_inferences(const RunResult& r) {
   std::fflush(stdout);
 }
 
-std::string json_inferences(const RunResult& r) {
-  std::string j = "[";
-  for (size_t i = 0; i < r.inferences.size(); ++i) {
-    const Inference& inf = r.inferences[i];
-    j += (i ? ",{" : "{") + std::string("\"name\":") + json_string(inf.function) + ",\"t\":" + number(inf.t) +
-         ",\"explanation\":[";
-    for (size_t n = 0; n < inf.nodes.size(); ++n) {
-      j += (n ? ",{" : "{") + std::string("\"t\":") + number(inf.nodes[n].t) +
-           ",\"text\":" + json_string(inf.nodes[n].text) + "}";
-    }
-    j += "]}";
-  }
-  return j + "]";
-}
-
-std::string json_event(const NamedEvent& e) {
-  return "\"event\":\"" + std::string(kEventNames[static_cast<int>(e.kind)]) + "\",\"function\":" +
-         json_string(e.function) + ",\"node\":" + std::to_string(e.node) + ",\"text\":" + json_string(e.text);
+// An event's fields, for the diff's entries.
+void add_event(Json& j, const NamedEvent& e) {
+  j["event"] = kEventNames[static_cast<int>(e.kind)];
+  j["function"] = e.function;
+  j["node"] = e.node;
+  j["text"] = e.text;
 }
 
 // The recorded events must name functions and nodes of the recorded rules.
@@ -67,37 +51,20 @@ void check_events(const Recording& rec, const RuleSet& rules) {
   }
 }
 
-}  // namespace
-
-int run_replay(const Args& args) {
+struct ReplayOptions {
   std::string file, rules_file, out_dir;
   bool json = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--json") {
-      json = true;
-    } else if (args[i] == "--out") {
-      if (i + 1 >= args.size()) return usage_error("--out needs a DIR");
-      out_dir = args[++i];
-    } else if (args[i] == "--rules") {
-      if (i + 1 >= args.size()) return usage_error("--rules needs a FILE of function models");
-      rules_file = args[++i];
-    } else if (!args[i].empty() && args[i][0] == '-') {
-      return usage_error("replay: unknown option '" + args[i] + "'");
-    } else if (file.empty()) {
-      file = args[i];
-    } else {
-      return usage_error("replay takes one recording");
-    }
-  }
-  if (file.empty()) return usage_error("replay needs a recording (made by afford run --record)");
+};
 
+int replay(const ReplayOptions& o) {
+  const std::string& file = o.file;
+  const std::string& rules_file = o.rules_file;
+  const std::string& out_dir = o.out_dir;
+  const bool json = o.json;
   const Recording rec = read_recording(file);
   const CompiledSession session = load_recorded_session(rec);
   check_events(rec, *session.rules);
   const std::vector<std::string> changed = changed_since_recording(rec);
-  std::string json_changed = "[";
-  for (const std::string& f : changed) json_changed += (json_changed.size() > 1 ? "," : "") + json_string(f);
-  json_changed += "]";
   if (!json) {
     std::cout << "recording " << rec.file << ": session " << rec.session_name << " (" << rec.source << "), "
               << rec.summary() << "\n";
@@ -120,16 +87,17 @@ int run_replay(const Args& args) {
     const std::vector<Observer*> observers = with_outputs({&checker});
     const RunResult result = run_session(session.model, *session.rules, source, observers);
     if (json) {
-      std::string j = "{\"recording\":" + json_string(rec.file) + ",\"session\":" + json_string(rec.session_name) +
-                      ",\"frames\":" + std::to_string(result.frames) + ",\"tail\":\"" +
-                      kTailNames[static_cast<int>(rec.tail)] + "\",\"changed_since\":" + json_changed +
-                      ",\"identical\":" +
-                      (checker.identical() ? "true" : "false") + ",\"functions\":" + json_inferences(result);
+      Json j = {{"recording", rec.file},
+                {"session", rec.session_name},
+                {"frames", result.frames},
+                {"tail", kTailNames[static_cast<int>(rec.tail)]},
+                {"changed_since", changed},
+                {"identical", checker.identical()},
+                {"functions", inferences_json(result)}};
       if (!checker.identical()) {
-        j += ",\"first_difference\":{\"frame\":" + std::to_string(checker.first_difference()) +
-             ",\"detail\":" + json_string(checker.describe(*session.rules)) + "}";
+        j["first_difference"] = {{"frame", checker.first_difference()}, {"detail", checker.describe(*session.rules)}};
       }
-      std::cout << j << "}\n";
+      std::cout << j.dump() << "\n";
       return checker.identical() ? 0 : 1;
     }
     print_inferences(result);
@@ -155,20 +123,19 @@ int run_replay(const Args& args) {
   const TimelineDiff diff = diff_timelines(recorded, rerun.named(*rules));
 
   if (json) {
-    std::string j = "{\"recording\":" + json_string(rec.file) + ",\"rules\":" + json_string(rules_file) +
-                    ",\"frames\":" + std::to_string(result.frames) + ",\"functions\":" + json_inferences(result) +
-                    ",\"same\":" + std::to_string(diff.same) + ",\"diff\":[";
-    for (size_t i = 0; i < diff.changes.size(); ++i) {
-      const TimelineChange& c = diff.changes[i];
+    Json changes = Json::array();
+    for (const TimelineChange& c : diff.changes) {
       static const char* kChange[] = {"only_recorded", "only_rerun", "shifted"};
-      const NamedEvent& e = c.kind == TimelineChange::added ? c.after : c.before;
-      j += (i ? ",{" : "{") + std::string("\"change\":\"") + kChange[c.kind] + "\"," + json_event(e);
-      if (c.kind != TimelineChange::added) j += ",\"recorded_t\":" + number(c.before.t);
-      if (c.kind != TimelineChange::removed) j += ",\"rerun_t\":" + number(c.after.t);
-      j += "}";
+      Json entry = {{"change", kChange[c.kind]}};
+      add_event(entry, c.kind == TimelineChange::added ? c.after : c.before);
+      if (c.kind != TimelineChange::added) entry["recorded_t"] = json_number(c.before.t);
+      if (c.kind != TimelineChange::removed) entry["rerun_t"] = json_number(c.after.t);
+      changes.push_back(std::move(entry));
     }
-    j += std::string("],\"same_state\":") + (physics.identical() ? "true" : "false") + "}";
-    std::cout << j << "\n";
+    const Json j = {{"recording", rec.file},       {"rules", rules_file},   {"frames", result.frames},
+                    {"functions", inferences_json(result)}, {"same", diff.same}, {"diff", changes},
+                    {"same_state", physics.identical()}};
+    std::cout << j.dump() << "\n";
     return 0;
   }
   std::cout << "re-ran " << result.frames << " frames under " << rules_file << "\n";
@@ -184,6 +151,22 @@ int run_replay(const Args& args) {
   std::cout << diff.same << " events the same, " << diff.shifted << " shifted, " << diff.removed
             << " only in the recording, " << diff.added << " only in the re-run\n";
   return 0;
+}
+
+}  // namespace
+
+void add_replay(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand(
+      "replay", "re-run a recording: the recorded events bit for bit, or the timeline diff under edited rules");
+  auto o = std::make_shared<ReplayOptions>();
+  cmd->add_option("REC", o->file, "a recording (made by afford run --record or afford live)")
+      ->required()
+      ->type_name(kFile);
+  cmd->add_option("--rules", o->rules_file, "re-run under these function models and diff the timelines")
+      ->type_name(kFile);
+  cmd->add_flag("--json", o->json, "print the result as JSON");
+  cmd->add_option("--out", o->out_dir, "also write timeline.jsonl and trace.csv into DIR")->type_name(kDir);
+  cmd->callback([run, o] { *run = [o] { return replay(*o); }; });
 }
 
 }  // namespace afford::cli

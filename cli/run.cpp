@@ -6,18 +6,19 @@
 // a recording (devices/recording.h) for `afford replay`.
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <thread>
 
 #include "commands.h"
+#include "option_checks.h"
 #include "files.h"
 #include "recording.h"
 #include "run.h"
 #include "scripted_agent.h"
 #include "session.h"
+#include "json_output.h"
 #include "session_outputs.h"
 #include "trace.h"
 
@@ -45,19 +46,8 @@ void print_text(const CompiledSession& s, const RunResult& r, const std::string&
 }
 
 void print_json(const CompiledSession& s, const RunResult& r) {
-  std::string j = "{\"session\":" + json_string(s.name) + ",\"functions\":[";
-  for (size_t i = 0; i < r.inferences.size(); ++i) {
-    const Inference& inf = r.inferences[i];
-    j += (i ? ",{" : "{") + std::string("\"name\":") + json_string(inf.function) + ",\"t\":" + number(inf.t) +
-         ",\"explanation\":[";
-    for (size_t n = 0; n < inf.nodes.size(); ++n) {
-      j += (n ? ",{" : "{") + std::string("\"t\":") + number(inf.nodes[n].t) +
-           ",\"text\":" + json_string(inf.nodes[n].text) + "}";
-    }
-    j += "]}";
-  }
-  j += "],\"frames\":" + std::to_string(r.frames) + "}";
-  std::cout << j << "\n";
+  const Json j = {{"session", s.name}, {"functions", inferences_json(r)}, {"frames", r.frames}};
+  std::cout << j.dump() << "\n";
 }
 
 // Runs a compiled session once: writes the timeline and the trace, prints
@@ -140,41 +130,37 @@ int watch(const std::string& file, const std::string& out_dir, bool json, long r
   }
 }
 
+struct RunOptions {
+  std::string file, out_dir, record;
+  bool json = false, watch = false;
+  long runs = 0;
+};
+
+int run_command(const RunOptions& o) {
+  if (o.watch) return watch(o.file, o.out_dir, o.json, o.runs);
+  run_once(load_session(o.file), o.out_dir, o.json, o.record);  // DataError: file:line:col, exit 1
+  return 0;
+}
+
 }  // namespace
 
-int run_run(const Args& args) {
-  std::string file, out_dir, record;
-  bool json = false, watching = false;
-  long runs = 0;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--json") {
-      json = true;
-    } else if (args[i] == "--watch") {
-      watching = true;
-    } else if (args[i] == "--runs") {
-      if (i + 1 >= args.size()) return usage_error("--runs needs a number");
-      runs = std::atol(args[++i].c_str());
-      if (runs <= 0) return usage_error("--runs needs a number above 0");
-    } else if (args[i] == "--record") {
-      if (i + 1 >= args.size()) return usage_error("--record needs a FILE");
-      record = args[++i];
-    } else if (args[i] == "--out") {
-      if (i + 1 >= args.size()) return usage_error("--out needs a DIR");
-      out_dir = args[++i];
-    } else if (!args[i].empty() && args[i][0] == '-') {
-      return usage_error("run: unknown option '" + args[i] + "'");
-    } else if (file.empty()) {
-      file = args[i];
-    } else {
-      return usage_error("run takes one SESSION file");
-    }
-  }
-  if (file.empty()) return usage_error("run needs a SESSION file");
-  if (runs > 0 && !watching) return usage_error("--runs goes with --watch");
-  if (watching && !record.empty()) return usage_error("--record does not go with --watch");
-  if (watching) return watch(file, out_dir, json, runs);
-  run_once(load_session(file), out_dir, json, record);  // DataError: file:line:col, exit 1
-  return 0;
+void add_run(CLI::App& app, Run* run) {
+  CLI::App* cmd =
+      app.add_subcommand("run", "simulate a session: inferred functions and why, timeline and trace files");
+  auto o = std::make_shared<RunOptions>();
+  cmd->add_option("SESSION", o->file, "a session file (sessions/*.yaml)")->required()->type_name(kFile);
+  cmd->add_flag("--json", o->json, "print the inferred functions as JSON");
+  cmd->add_option("--out", o->out_dir, "the folder of timeline.jsonl and trace.csv (default out/<session>)")
+      ->type_name(kDir);
+  CLI::Option* watch = cmd->add_flag("--watch", o->watch, "run again whenever a file the session uses changes");
+  cmd->add_option("--runs", o->runs, "with --watch: stop after N runs")
+      ->type_name("N")
+      ->check(count_above_zero())
+      ->needs(watch);
+  cmd->add_option("--record", o->record, "also write a recording to FILE, for afford replay")
+      ->type_name(kFile)
+      ->excludes(watch);
+  cmd->callback([run, o] { *run = [o] { return run_command(*o); }; });
 }
 
 }  // namespace afford::cli

@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "option_checks.h"
 #include "rule_tests.h"
 #include "scripted_agent.h"
 
@@ -60,23 +61,13 @@ void print_coverage(const std::vector<RulesCoverage>& coverage) {
   }
 }
 
-}  // namespace
-
-int run_test(const Args& args) {
-  std::string dir;
+struct TestOptions {
+  std::string dir = "tests/rules";
   bool coverage = false;
-  for (const std::string& a : args) {
-    if (a == "--coverage") {
-      coverage = true;
-    } else if (!a.empty() && a[0] == '-') {
-      return usage_error("test: unknown option '" + a + "'");
-    } else if (dir.empty()) {
-      dir = a;
-    } else {
-      return usage_error("test takes one DIR");
-    }
-  }
-  if (dir.empty()) dir = "tests/rules";
+};
+
+int test(const TestOptions& o) {
+  const std::string& dir = o.dir;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return usage_error("test: '" + dir + "' is not a directory of rule test cases");
 
@@ -99,9 +90,21 @@ int run_test(const Args& args) {
     if (r.coverage) merge_coverage(&total, *r.coverage);
   }
   if (files.empty()) std::cout << "no rule test cases (*.yaml) under " << dir << "\n";
-  if (coverage) print_coverage(total);
+  if (o.coverage) print_coverage(total);
   std::cout << passed << " passed, " << failed << " failed\n";
   return failed > 0 || files.empty() ? 1 : 0;
+}
+
+}  // namespace
+
+void add_test(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand("test", "run the rule test cases under DIR: PASS/FAIL each, nodes reached");
+  auto o = std::make_shared<TestOptions>();
+  cmd->add_option("DIR", o->dir, "the folder of rule test cases (*.yaml, searched recursively)")
+      ->type_name(kDir)
+      ->capture_default_str();
+  cmd->add_flag("--coverage", o->coverage, "also print the nodes of each function model the cases reached");
+  cmd->callback([run, o] { *run = [o] { return test(*o); }; });
 }
 
 }  // namespace afford::cli

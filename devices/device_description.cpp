@@ -100,8 +100,110 @@ int read_finger(const Node& node) {
             "'" + s + "'" + did_you_mean(s, {kFingerNames.begin(), kFingerNames.end()}));
 }
 
+// The keys that say where a value sits in a report, shared by fields and
+// actuators (read_encoding).
+std::vector<KeySchema> encoding_keys() {
+  using namespace schema;
+  return {required_key("offset", integer(), "its first byte in the report"),
+          required_key("width", integer(), "its width: 1, 2 or 4 bytes"),
+          optional_key("endian", choice({"little", "big"}), "its byte order (default little)"),
+          optional_key("signed", boolean(), "true for a two's complement value (default false)")};
+}
+
+const MapSchema& field_schema() {
+  using namespace schema;
+  static const MapSchema kField = [] {
+    MapSchema m{"a field of the IN report: where it is and what it fills",
+                {required_key("name", name(), "the field's name, unique in the report")}};
+    for (KeySchema& k : encoding_keys()) m.keys.push_back(std::move(k));
+    m.keys.push_back(optional_key("scale", number(), "the unit value of one count, not zero (default 1)"));
+    m.keys.push_back(optional_key("value_offset", number(), "the value added after scaling (default 0)"));
+    m.keys.push_back(optional_key("unit", text(), "the unit of the scaled value (deg, mm, ...)"));
+    m.keys.push_back(optional_key("to", text(), "what it fills: thumb.distal, index.tip.x, hand.rx, ... or none"));
+    return m;
+  }();
+  return kField;
+}
+
+const MapSchema& in_report_schema() {
+  using namespace schema;
+  static const MapSchema kIn{"the report the device sends",
+                             {required_key("size", integer(), "its size in bytes, 1 to 512"),
+                              optional_key("report_id", integer(), "its first byte, 0 to 255, if it has one"),
+                              required_key("fields", sequence(mapping(field_schema()), 1), "its fields")}};
+  return kIn;
+}
+
+const MapSchema& segments_schema() {
+  using namespace schema;
+  static const MapSchema kSegments = [] {
+    MapSchema m{"the length of each segment of a finger"};
+    for (const char* joint : kJointNames) {
+      m.keys.push_back(required_key(joint, quantity(dim::length), std::string("the segment after the ") + joint +
+                                                                       " joint"));
+    }
+    return m;
+  }();
+  return kSegments;
+}
+
+const MapSchema& chain_schema() {
+  using namespace schema;
+  static const MapSchema kChain{"a finger's kinematic chain",
+                                {required_key("base", vector(dim::length), "the finger's base, in the hand frame"),
+                                 required_key("segments", mapping(segments_schema()), "its segment lengths")}};
+  return kChain;
+}
+
+const MapSchema& kinematics_schema() {
+  using namespace schema;
+  static const MapSchema kKinematics = [] {
+    MapSchema m{"the fingers whose tips are computed from joint angles"};
+    for (const char* finger : kFingerNames) {
+      m.keys.push_back(optional_key(finger, mapping(chain_schema()), std::string("the chain of the ") + finger));
+    }
+    return m;
+  }();
+  return kKinematics;
+}
+
+const MapSchema& actuator_schema() {
+  using namespace schema;
+  static const MapSchema kActuator = [] {
+    MapSchema m{"a force-feedback actuator of the OUT report",
+                {required_key("finger", choice({kFingerNames.begin(), kFingerNames.end()}), "the finger it pushes")}};
+    for (KeySchema& k : encoding_keys()) m.keys.push_back(std::move(k));
+    m.keys.push_back(required_key("counts_per_newton", number(), "counts per newton, above 0"));
+    m.keys.push_back(required_key("saturation", quantity(dim::force), "the largest force it exerts"));
+    return m;
+  }();
+  return kActuator;
+}
+
+const MapSchema& out_report_schema() {
+  using namespace schema;
+  static const MapSchema kOut{"the report the device receives",
+                              {required_key("size", integer(), "its size in bytes, 1 to 512"),
+                               optional_key("report_id", integer(), "its first byte, 0 to 255, if it has one"),
+                               required_key("actuators", sequence(mapping(actuator_schema()), 1), "its actuators")}};
+  return kOut;
+}
+
+const MapSchema& usb_schema() {
+  using namespace schema;
+  static const MapSchema kUsb{
+      "how the device is found and read",
+      {required_key("vendor", integer(), "the USB vendor id, 0x0000 to 0xffff"),
+       required_key("product", integer(), "the USB product id, 0x0000 to 0xffff"),
+       optional_key("interface", integer(), "the interface number, 0 to 255 (default 0)"),
+       required_key("in_endpoint", integer(), "the IN endpoint, 0x81 to 0x8f"),
+       optional_key("out_endpoint", integer(), "the OUT endpoint, 0x01 to 0x0f, for force feedback"),
+       optional_key("transfer", choice({"interrupt", "bulk"}), "the transfer type (default interrupt)")}};
+  return kUsb;
+}
+
 void read_in_report(const Node& node, DeviceDescription& d) {
-  MapReader m(node, "the IN report", {"size", "report_id", "fields"});
+  MapReader m(node, "the IN report", in_report_schema());
   d.in_size = static_cast<int>(read_integer(m.required("size"), 1, kMaxReport, "a report size in bytes (1..512)"));
   std::vector<int> owner(static_cast<size_t>(d.in_size), 0);
   std::vector<std::string> names;
@@ -114,8 +216,7 @@ void read_in_report(const Node& node, DeviceDescription& d) {
   if (!fields.is_sequence() || fields.size() == 0) fields.fail("a sequence of fields");
   for (size_t i = 0; i < fields.size(); ++i) {
     const Node fn = fields[i];
-    MapReader fm(fn, "a field",
-                 {"name", "offset", "width", "endian", "signed", "scale", "value_offset", "unit", "to"});
+    MapReader fm(fn, "a field", field_schema());
     Field f;
     f.loc = fn.loc();
     const Node name_node = fm.required("name");
@@ -154,22 +255,22 @@ void read_in_report(const Node& node, DeviceDescription& d) {
 }
 
 void read_kinematics(const Node& node, DeviceDescription& d) {
-  MapReader m(node, "the kinematics", {kFingerNames.begin(), kFingerNames.end()});
+  MapReader m(node, "the kinematics", kinematics_schema());
   for (int f = 0; f < kFingers; ++f) {
     std::optional<Node> fn = m.optional(kFingerNames[f]);
     if (!fn) continue;
-    MapReader fm(*fn, std::string("the chain of the ") + kFingerNames[f], {"base", "segments"});
+    MapReader fm(*fn, std::string("the chain of the ") + kFingerNames[f], chain_schema());
     FingerChain& c = d.kinematics[f];
     c.present = true;
     c.base = read_vector(fm.required("base"), dim::length);
     const Node segs = fm.required("segments");
-    MapReader sm(segs, "the segments", {kJointNames.begin(), kJointNames.end()});
+    MapReader sm(segs, "the segments", segments_schema());
     for (int j = 0; j < kJoints; ++j) c.segment[j] = read_positive(sm.required(kJointNames[j]), dim::length);
   }
 }
 
 void read_out_report(const Node& node, DeviceDescription& d) {
-  MapReader m(node, "the OUT report", {"size", "report_id", "actuators"});
+  MapReader m(node, "the OUT report", out_report_schema());
   d.has_out = true;
   d.out_size = static_cast<int>(read_integer(m.required("size"), 1, kMaxReport, "a report size in bytes (1..512)"));
   std::vector<int> owner(static_cast<size_t>(d.out_size), 0);
@@ -183,8 +284,7 @@ void read_out_report(const Node& node, DeviceDescription& d) {
   if (!acts.is_sequence() || acts.size() == 0) acts.fail("a sequence of actuators");
   std::array<bool, kFingers> seen{};
   for (size_t i = 0; i < acts.size(); ++i) {
-    MapReader am(acts[i], "an actuator",
-                 {"finger", "offset", "width", "endian", "signed", "counts_per_newton", "saturation"});
+    MapReader am(acts[i], "an actuator", actuator_schema());
     Actuator a;
     const Node fnode = am.required("finger");
     a.finger = read_finger(fnode);
@@ -202,6 +302,21 @@ void read_out_report(const Node& node, DeviceDescription& d) {
 }
 
 }  // namespace
+
+const MapSchema& device_schema() {
+  using namespace schema;
+  static const MapSchema kDevice{
+      "a device description: a USB hand-tracking or force-feedback device (devices/README.md)",
+      {required_key("device", name(), "the device's name"),
+       optional_key("description", text(), "what the device is, in a sentence"),
+       required_key("usb", mapping(usb_schema()), "how the device is found and read"),
+       required_key("rate", number(), "its sample rate in Hz, above 0 and at most 100000"),
+       optional_key("resample", choice({"hold", "interpolate"}), "how samples fill the frames (default hold)"),
+       required_key("in_report", mapping(in_report_schema()), "the report the device sends"),
+       optional_key("kinematics", mapping(kinematics_schema()), "fingertips from joint angles"),
+       optional_key("out_report", mapping(out_report_schema()), "the report it receives, with out_endpoint")}};
+  return kDevice;
+}
 
 std::vector<std::string> device_target_names() {
   std::vector<std::string> out{"none"};
@@ -221,16 +336,14 @@ DeviceDescription read_device_description(const Node& root) {
     root.child(root.yaml().begin()->first)
         .fail("a device description (its first key 'device')", "'" + first + "'");
   }
-  MapReader m(root, "a device description",
-              {"device", "description", "usb", "rate", "resample", "in_report", "kinematics", "out_report"});
+  MapReader m(root, "a device description", device_schema());
   DeviceDescription d;
   d.file = root.loc().file;
   d.name = read_name(m.required("device"));
   if (std::optional<Node> desc = m.optional("description")) d.description = read_string(*desc);
 
   {
-    MapReader u(m.required("usb"), "the usb section",
-                {"vendor", "product", "interface", "in_endpoint", "out_endpoint", "transfer"});
+    MapReader u(m.required("usb"), "the usb section", usb_schema());
     d.vendor = static_cast<std::uint16_t>(read_integer(u.required("vendor"), 0, 0xffff, "a vendor id (0x0000..0xffff)"));
     d.product =
         static_cast<std::uint16_t>(read_integer(u.required("product"), 0, 0xffff, "a product id (0x0000..0xffff)"));

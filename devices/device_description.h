@@ -126,6 +126,7 @@ struct DeviceDescription {
 // Reads a device description; every mistake is a DataError at file:line:col.
 DeviceDescription load_device_description(const std::string& path);
 DeviceDescription read_device_description(const Node& root);
+const MapSchema& device_schema();  // the keys of a device description
 
 // Every target name a field's `to:` may give ("thumb.distal", "hand.x", ...).
 std::vector<std::string> device_target_names();

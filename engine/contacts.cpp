@@ -11,10 +11,10 @@ namespace {
 
 // Every part's world pose and box at the solved angle, once a frame.
 void place_parts(const Model& m, State& s) {
-  const Eigen::Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
+  s.moving_arm_world = s.object_pose * moving_arm_pose(s.theta);
   for (size_t i = 0; i < m.parts.size(); ++i) {
     const ModelPart& part = m.parts[i];
-    s.part_pose[i] = (part.arm == Arm::moving ? moving : s.object_pose) * part.in_arm;
+    s.part_pose[i] = (part.arm == Arm::moving ? s.moving_arm_world : s.object_pose) * part.in_arm;
     s.part_box[i] = world_box(part.geometry, s.part_pose[i]);
   }
 }
@@ -50,12 +50,11 @@ void object_actee(const Model& m, State& s) {
     // the contact angle (within the tolerance, as an angle at the actee).
     const double slack = m.contact_tolerance / std::max(std::abs(s.load_distance), 1e-6);
     const bool closed_on = s.theta <= s.contact_angle + slack;
-    const Eigen::Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
     for (size_t i = 0; i < m.parts.size(); ++i) {
       const JawContact& jc = s.jaw_contact[i];
       const bool on_moving = m.parts[i].arm == Arm::moving;
       if (!jc.touching || (on_moving && !closed_on)) continue;
-      const Eigen::Isometry3d& arm = on_moving ? moving : s.object_pose;
+      const Eigen::Isometry3d& arm = on_moving ? s.moving_arm_world : s.object_pose;
       s.object_actee.add(ContactPoint{arm * jc.in_arm.point, arm.linear() * jc.in_arm.normal, jc.in_arm.distance});
       s.actee_arms |= static_cast<std::uint8_t>(on_moving ? 2 : 1);
     }

@@ -43,8 +43,26 @@ Node Files::document(const Node& map, std::string_view key, const Node& value) {
 }
 
 
+const MapSchema& actee_entry_schema() {
+  using namespace schema;
+  static const MapSchema kEntry = [] {
+    MapSchema m{"the actee and where it is: 'at' on the fixed jaw, or 'position' in the world",
+                {required_key("file", any_of({path(), mapping(actee_schema())}),
+                              "the actee file, or its content as a mapping"),
+                 optional_key("at", quantity(dim::length), "a distance on the fixed jaw, from the fulcrum")},
+                false,
+                {{"at", "position"}}};
+    for (KeySchema& k : pose_keys("the actee in the world")) {
+      k.required = false;  // given with 'position' instead of 'at'
+      m.keys.push_back(std::move(k));
+    }
+    return m;
+  }();
+  return kEntry;
+}
+
 void read_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOptions* options) {
-  MapReader m(node, "the actee", {"file", "at", "position", "rotation"});
+  MapReader m(node, "the actee", actee_entry_schema());
   *actee = read_actee(files.document(node, "file", m.required("file")));
   if (m.has("at") && m.has("position")) {
     key_node(node, "position").fail("either 'at' (on the fixed jaw) or 'position' (in the world)", "both");

@@ -39,6 +39,8 @@ class Files {
 
 // `actee: {file, at}` (resting on the fixed jaw at a distance) or
 // `{file, position, rotation?}` (in the world).
+// The keys of that mapping (schema.h).
+const MapSchema& actee_entry_schema();
 void read_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOptions* options);
 
 }  // namespace afford

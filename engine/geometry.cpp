@@ -9,6 +9,10 @@
 #include <fcl/geometry/shape/ellipsoid.h>
 #include <fcl/geometry/shape/sphere.h>
 #include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_box.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_capsule.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_cylinder.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_sphere.h>
 #include <fcl/narrowphase/distance.h>
 
 #include <algorithm>
@@ -304,6 +308,40 @@ struct ContactQuery::Impl {
     collision_result.clear();
   }
 
+  // The distance from a point (at) to b and b's nearest point. For a box,
+  // sphere, capsule or cylinder this calls the closed form that
+  // fcl::distance ends in (GJKSolver_indep's shape pairs) directly: the same
+  // numbers, without the traversal set up around it, which cost twice the
+  // closed form itself (about 900 instructions a fingertip and part).
+  double point_distance(const Eigen::Isometry3d& at, const Geometry& b, const Eigen::Isometry3d& pb,
+                        Vector3d* on_b) {
+    double d = -1;  // as in FCL's traversal: an overlap leaves -1, the points zero
+    Vector3d on_point = Vector3d::Zero();
+    *on_b = Vector3d::Zero();
+    switch (b.spec().kind) {
+      case ShapeKind::box:  // boxes and spheres need no fcl_offset (identity)
+        fcl::detail::sphereBoxDistance(point, at, static_cast<const fcl::Boxd&>(b.fcl()), pb, &d, &on_point, on_b);
+        return d;
+      case ShapeKind::sphere:
+        fcl::detail::sphereSphereDistance(point, at, static_cast<const fcl::Sphered&>(b.fcl()), pb, &d, &on_point,
+                                          on_b);
+        return d;
+      case ShapeKind::capsule:
+        fcl::detail::sphereCapsuleDistance(point, at, static_cast<const fcl::Capsuled&>(b.fcl()),
+                                           pb * b.fcl_offset(), &d, &on_point, on_b);
+        return d;
+      case ShapeKind::cylinder:
+        fcl::detail::sphereCylinderDistance(point, at, static_cast<const fcl::Cylinderd&>(b.fcl()),
+                                            pb * b.fcl_offset(), &d, &on_point, on_b);
+        return d;
+      default:
+        distance_result.clear();
+        d = fcl::distance(&point, at, &b.fcl(), pb * b.fcl_offset(), nearest_request, distance_result);
+        *on_b = distance_result.nearest_points[1];
+        return d;
+    }
+  }
+
   double distance(const Geometry& a, const Eigen::Isometry3d& pa, const Geometry& b,
                   const Eigen::Isometry3d& pb, const fcl::DistanceRequestd& request) {
     distance_result.clear();
@@ -329,13 +367,11 @@ bool ContactQuery::contact(const Geometry& a, const Eigen::Isometry3d& pose_a, c
     const Vector3d centre = pose_a.translation();
     Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
     at.translation() = centre;
-    q.distance_result.clear();
-    const double from_centre = fcl::distance(&q.point, at, &b.fcl(), pose_b * b.fcl_offset(),
-                                             q.nearest_request, q.distance_result);
+    Vector3d on_b;
+    const double from_centre = q.point_distance(at, b, pose_b, &on_b);
     if (from_centre > kTinyGap) {
       const double gap = from_centre - a.spec().radius;
       if (gap > tolerance) return false;
-      const Vector3d& on_b = q.distance_result.nearest_points[1];
       out->normal = (on_b - centre) / from_centre;
       out->point = 0.5 * (centre + a.spec().radius * out->normal + on_b);  // middle of the gap or overlap
       out->distance = gap;

@@ -38,8 +38,45 @@ JointRange read_joint_range(const Node& node) {
   return r;
 }
 
+const MapSchema& grasp_finger_schema() {
+  using namespace schema;
+  static const MapSchema kFinger = [] {
+    MapSchema m{"the joint ranges of one finger; a joint not given is free"};
+    for (const char* joint : kJointNames) {
+      m.keys.push_back(optional_key(joint, sequence(quantity(dim::angle), 2, 2),
+                                    std::string("the range [min, max] of the ") + joint + " joint"));
+    }
+    return m;
+  }();
+  return kFinger;
+}
+
+const MapSchema& grasp_fingers_schema() {
+  using namespace schema;
+  static const MapSchema kFingers = [] {
+    MapSchema m{"the fingers the grasp type constrains; a finger not given is free"};
+    for (const char* finger : kFingerNames) {
+      m.keys.push_back(optional_key(finger, mapping(grasp_finger_schema()), std::string("the ") + finger));
+    }
+    return m;
+  }();
+  return kFingers;
+}
+
+const MapSchema& grasp_type_schema() {
+  using namespace schema;
+  static const MapSchema kType{
+      "a grasp type: joint ranges that classify a hand posture",
+      {required_key("name", name(), "the grasp type's name, unique in the file"),
+       required_key("kind", choice({"power", "precision"}), "a power or a precision grasp"),
+       required_key("description", text(), "what the grasp is, in a sentence"),
+       required_key("max_force", quantity(dim::force), "the largest force a finger exerts in this grasp"),
+       required_key("fingers", mapping(grasp_fingers_schema()), "the joint ranges, per finger")}};
+  return kType;
+}
+
 GraspTypeSpec read_grasp_type(const Node& node, const std::vector<GraspTypeSpec>& before) {
-  MapReader m(node, "a grasp type", {"name", "kind", "description", "max_force", "fingers"});
+  MapReader m(node, "a grasp type", grasp_type_schema());
   GraspTypeSpec g;
   g.loc = node.loc();
   const Node name = m.required("name");
@@ -54,7 +91,7 @@ GraspTypeSpec read_grasp_type(const Node& node, const std::vector<GraspTypeSpec>
   g.description = read_string(m.required("description"));
   g.max_force = read_positive(m.required("max_force"), dim::force);
   const Node fingers_node = m.required("fingers");
-  MapReader fingers(fingers_node, "the fingers of " + g.name, {kFingerNames.begin(), kFingerNames.end()});
+  MapReader fingers(fingers_node, "the fingers of " + g.name, grasp_fingers_schema());
   // A type that constrains nothing would take every posture, the open hand
   // too, for a grasp.
   if (fingers_node.size() == 0) fingers_node.fail("at least one finger with a joint range", "none");
@@ -62,7 +99,7 @@ GraspTypeSpec read_grasp_type(const Node& node, const std::vector<GraspTypeSpec>
     const std::optional<Node> finger_node = fingers.optional(kFingerNames[f]);
     if (!finger_node) continue;  // free
     const std::string what = std::string("the ") + kFingerNames[f] + " of " + g.name;
-    MapReader finger(*finger_node, what, {kJointNames.begin(), kJointNames.end()});
+    MapReader finger(*finger_node, what, grasp_finger_schema());
     if (finger_node->size() == 0) finger_node->fail("at least one of distal, proximal, metacarpal", "none");
     for (size_t j = 0; j < kJoints; ++j) {
       if (std::optional<Node> range = finger.optional(kJointNames[j])) g.range[f][j] = read_joint_range(*range);
@@ -73,8 +110,16 @@ GraspTypeSpec read_grasp_type(const Node& node, const std::vector<GraspTypeSpec>
 
 }  // namespace
 
+const MapSchema& grasps_schema() {
+  using namespace schema;
+  static const MapSchema kGrasps{
+      "a grasp taxonomy file (rules/README.md)",
+      {required_key("grasps", sequence(mapping(grasp_type_schema()), 1), "the grasp types, first match wins")}};
+  return kGrasps;
+}
+
 std::vector<GraspTypeSpec> read_grasps(const Node& root) {
-  MapReader top(root, "a grasps file", {"grasps"});
+  MapReader top(root, "a grasps file", grasps_schema());
   const Node list = top.required("grasps");
   if (!list.is_sequence() || list.size() == 0) list.fail("a sequence of grasp types");
   std::vector<GraspTypeSpec> grasps;

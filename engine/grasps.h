@@ -15,6 +15,7 @@
 namespace afford {
 
 class Node;
+struct MapSchema;
 struct Model;
 
 enum class GraspKind { power, precision };
@@ -41,6 +42,7 @@ struct GraspTypeSpec {
 // first mistake (unknown keys, duplicate names, min >= max, wrong units, ...).
 std::vector<GraspTypeSpec> load_grasps(const std::string& path);
 std::vector<GraspTypeSpec> read_grasps(const Node& root);
+const MapSchema& grasps_schema();  // the keys of a grasps file
 
 // Compiler pass: the taxonomy into the model's flat per-type arrays.
 void compile_grasps(const std::vector<GraspTypeSpec>& grasps, Model& m);

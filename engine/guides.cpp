@@ -35,20 +35,71 @@ int Guides::find(const std::string& name) const {
 
 namespace {
 
-const std::vector<std::string> kCommonKeys = {"name", "kind", "description", "colour", "alpha", "lift"};
-
-std::vector<std::string> kind_keys(GuideKind k) {
-  switch (k) {
-    case GuideKind::symmetry_plane: return {"margin", "gravity"};
-    case GuideKind::interaction_space: return {"fit_colour", "misfit_colour"};
-    case GuideKind::emphasis: return {"faces"};
-    case GuideKind::advantage: return {"step", "load_at", "saturate", "ramp"};
-  }
-  return {};
-}
-
 constexpr GuideKind kKinds[] = {GuideKind::symmetry_plane, GuideKind::interaction_space, GuideKind::emphasis,
                                 GuideKind::advantage};
+
+// [r, g, b], each a bare number in 0..1 (read_colour).
+ValueSchema colour_value() { return schema::sequence(schema::number(), 3, 3); }
+
+const MapSchema& ramp_schema() {
+  using namespace schema;
+  const ValueSchema colour = colour_value();
+  static const MapSchema kRamp{"the colours of the advantage ramp",
+                               {required_key("decline", colour, "below an advantage of 1"),
+                                required_key("neutral", colour, "at an advantage of 1"),
+                                required_key("amplify", colour, "at the saturating advantage")}};
+  return kRamp;
+}
+
+// The keys of a guide of kind `k`: the keys every guide has, then its kind's.
+MapSchema make_guide_schema(GuideKind k) {
+  using namespace schema;
+  const ValueSchema colour = colour_value();
+  MapSchema m{std::string("a guide of kind ") + guide_kind_name(k),
+              {required_key("name", name(), "the guide's name, unique in the file"),
+               required_key("kind", choice({guide_kind_name(k)}), "what the guide shows"),
+               required_key("description", text(), "what the guide shows, in a sentence"),
+               required_key("colour", colour, "its colour [r, g, b], each from 0 to 1"),
+               optional_key("alpha", number(), "its opacity from 0 to 1 (default 1)"),
+               optional_key("lift", quantity(dim::length), "how far it is drawn off the surface")}};
+  switch (k) {
+    case GuideKind::symmetry_plane:
+      m.keys.push_back(
+          optional_key("margin", quantity(dim::length), "how far the plane's rectangle exceeds the object"));
+      m.keys.push_back(
+          optional_key("gravity", plain_vector(), "gravity's direction in the world (default [0, 0, -1])"));
+      break;
+    case GuideKind::interaction_space:
+      m.keys.push_back(optional_key("fit_colour", colour, "the colour of an actee that fits"));
+      m.keys.push_back(optional_key("misfit_colour", colour, "the colour of an actee that does not"));
+      break;
+    case GuideKind::emphasis:
+      m.keys.push_back(optional_key("faces", choice({"closing", "opening", "both"}),
+                                    "the faces to mark: pressed to close, to open, or both"));
+      break;
+    case GuideKind::advantage: {
+      m.keys.push_back(required_key("step", quantity(dim::length), "the segment length along each arm"));
+      m.keys.push_back(optional_key("load_at", choice({"from", "middle", "to"}), "where in the application "
+                                    "region the load sits"));
+      m.keys.push_back(optional_key("saturate", number(),
+                                    "the advantage, above 1, at which the ramp reaches amplify (default 2)"));
+      m.keys.push_back(required_key("ramp", mapping(ramp_schema()), "the colours of the ramp"));
+      break;
+    }
+  }
+  return m;
+}
+
+const MapSchema& guide_schema(GuideKind k) {
+  static const std::vector<MapSchema> kSchemas = [] {
+    std::vector<MapSchema> all;
+    for (GuideKind kind : kKinds) all.push_back(make_guide_schema(kind));
+    return all;
+  }();
+  size_t i = 0;
+  while (kKinds[i] != k) ++i;
+  return kSchemas[i];
+}
 
 GuideKind read_kind(const Node& node) {
   const std::string s =
@@ -78,7 +129,6 @@ GuideSpec read_guide(const Node& node, const std::vector<GuideSpec>& before) {
   // The kind decides the keys a guide may have: with a kind we know, only
   // its keys are accepted; otherwise any guide's key is, and the kind itself
   // is reported (with "did you mean") once the keys have been checked.
-  std::vector<std::string> keys = kCommonKeys;
   const YAML::Node kind_yaml = node.yaml()["kind"];
   std::optional<GuideKind> known;
   if (kind_yaml && kind_yaml.IsScalar()) {
@@ -86,9 +136,12 @@ GuideSpec read_guide(const Node& node, const std::vector<GuideSpec>& before) {
       if (kind_yaml.Scalar() == guide_kind_name(k)) known = k;
     }
   }
+  std::vector<std::string> keys;
   for (GuideKind k : kKinds) {
     if (known && k != *known) continue;
-    for (const std::string& key : kind_keys(k)) keys.push_back(key);
+    for (const std::string& key : guide_schema(k).key_names()) {
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    }
   }
   MapReader m(node, known ? std::string("a guide of kind ") + guide_kind_name(*known) : "a guide", keys);
 
@@ -138,7 +191,7 @@ GuideSpec read_guide(const Node& node, const std::vector<GuideSpec>& before) {
         g.saturate = read_number(*n);
         if (!(g.saturate > 1)) n->fail("a mechanical advantage greater than 1");
       }
-      MapReader ramp(m.required("ramp"), "the colour ramp", {"decline", "neutral", "amplify"});
+      MapReader ramp(m.required("ramp"), "the colour ramp", ramp_schema());
       g.decline = read_colour(ramp.required("decline"), alpha);
       g.neutral = read_colour(ramp.required("neutral"), alpha);
       g.amplify = read_colour(ramp.required("amplify"), alpha);
@@ -150,8 +203,19 @@ GuideSpec read_guide(const Node& node, const std::vector<GuideSpec>& before) {
 
 }  // namespace
 
+const MapSchema& guides_schema() {
+  using namespace schema;
+  static const MapSchema kGuides = [] {
+    ValueSchema guide = any_of({});
+    for (GuideKind k : kKinds) guide.items.push_back(mapping(guide_schema(k)));
+    return MapSchema{"a guides file: what the renderer draws on a tool (rules/README.md)",
+                     {required_key("guides", sequence(guide, 1), "the guides")}};
+  }();
+  return kGuides;
+}
+
 std::vector<GuideSpec> read_guides(const Node& root) {
-  MapReader top(root, "a guides file", {"guides"});
+  MapReader top(root, "a guides file", guides_schema());
   const Node list = top.required("guides");
   if (!list.is_sequence() || list.size() == 0) list.fail("a sequence of guides");
   std::vector<GuideSpec> guides;

@@ -29,6 +29,7 @@
 namespace afford {
 
 class Node;
+struct MapSchema;
 struct Model;
 
 // ---------------------------------------------------------------- the guide file
@@ -83,6 +84,7 @@ struct GuideSpec {
 // 0..1, duplicate names, ...).
 std::vector<GuideSpec> load_guides(const std::string& path);
 std::vector<GuideSpec> read_guides(const Node& root);
+const MapSchema& guides_schema();  // the keys of a guides file
 
 // ---------------------------------------------------------------- computed geometry
 

@@ -26,6 +26,16 @@ Eigen::Vector3d read_direction(const Node& node);  // three numbers, made unit
 // The `effects:` mapping of a file of kind `home` (load_effects.cpp).
 std::vector<EffectSpec> read_effects(const Node& node, EffectHome home);
 
+// The keys of each mapping (schema.h): the loaders read with them and
+// json_schema.cpp writes them out.
+const MapSchema& object_schema();
+const MapSchema& actee_schema();
+const MapSchema& agent_schema();
+const MapSchema& shape_schema();
+const MapSchema& range_schema();
+std::vector<KeySchema> pose_keys(const std::string& what);  // position, rotation
+const MapSchema& effects_schema(EffectHome home);
+
 // Which kind a file is, from its first key (object, actee, agent, ...).
 std::string file_kind(const Node& root);
 

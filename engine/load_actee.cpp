@@ -3,10 +3,26 @@
 
 namespace afford {
 
+const MapSchema& actee_schema() {
+  using namespace schema;
+  static const MapSchema kActee{
+      "an actee file: what a tool acts on (actees/README.md)",
+      {required_key("actee", name(), "the actee's name"),
+       required_key("description", text(), "what it is, in a sentence"),
+       required_key("shape", mapping(shape_schema()), "its collision shape"),
+       required_key("mass", quantity(dim::mass), "its mass"),
+       required_key("force_direction", plain_vector(),
+                    "A_d: the direction (actee frame) along which force counts against the limit"),
+       required_key("limit", quantity(dim::force),
+                    "A_pv: the force along force_direction above which it breaks (or counts as squeezed)"),
+       required_key("stiffness", quantity(dim::stiffness), "its contact stiffness at small deflections"),
+       required_key("breaks", boolean(), "true: brittle, breaks above the limit; false: compliant, never breaks"),
+       optional_key("effects", mapping(effects_schema(EffectHome::actee)), "optional effects of the actee")}};
+  return kActee;
+}
+
 ActeeSpec read_actee(const Node& root) {
-  MapReader m(root, "an actee file",
-              {"actee", "description", "shape", "mass", "force_direction", "limit", "stiffness", "breaks",
-               "effects"});
+  MapReader m(root, "an actee file", actee_schema());
   ActeeSpec a;
   a.loc = root.loc();
   a.file = root.loc().file;

@@ -8,8 +8,34 @@ const std::array<const char*, kJoints> kJointNames = {"distal", "proximal", "met
 
 namespace {
 
+const MapSchema& finger_schema() {
+  using namespace schema;
+  static const MapSchema kFinger = [] {
+    MapSchema m{"a finger: its tip and the ranges of its joints",
+                {required_key("tip_radius", quantity(dim::length), "the radius of the fingertip")}};
+    for (const char* joint : kJointNames) {
+      m.keys.push_back(required_key(joint, sequence(quantity(dim::angle), 2, 2),
+                                    std::string("the range [min, max] of the ") + joint + " joint"));
+    }
+    return m;
+  }();
+  return kFinger;
+}
+
+const MapSchema& fingers_schema() {
+  using namespace schema;
+  static const MapSchema kFingers = [] {
+    MapSchema m{"every finger of the hand"};
+    for (const char* finger : kFingerNames) {
+      m.keys.push_back(required_key(finger, mapping(finger_schema()), std::string("the ") + finger));
+    }
+    return m;
+  }();
+  return kFingers;
+}
+
 FingerSpec read_finger(const Node& node, const std::string& name) {
-  MapReader m(node, "the " + name, {"tip_radius", kJointNames[0], kJointNames[1], kJointNames[2]});
+  MapReader m(node, "the " + name, finger_schema());
   FingerSpec f;
   f.tip_radius = read_positive(m.required("tip_radius"), dim::length);
   for (int j = 0; j < kJoints; ++j) {
@@ -24,8 +50,23 @@ FingerSpec read_finger(const Node& node, const std::string& name) {
 
 }  // namespace
 
+const MapSchema& agent_schema() {
+  using namespace schema;
+  static const MapSchema kAgent{
+      "an agent file: a hand (agents/README.md)",
+      {required_key("agent", name(), "the agent's name"),
+       required_key("description", text(), "what it is, in a sentence"),
+       required_key("force_gain", quantity(dim::stiffness),
+                    "f_a of eq. 3: the hand's stiffness between the tracked thumb and the arm"),
+       required_key("max_force", quantity(dim::force), "the largest effort force the hand can exert at the emphasis"),
+       optional_key("damping", quantity(dim::damping),
+                    "the hand's damping, in parallel with force_gain (default none)"),
+       required_key("fingers", mapping(fingers_schema()), "every finger's tip and joint ranges")}};
+  return kAgent;
+}
+
 AgentSpec read_agent(const Node& root) {
-  MapReader m(root, "an agent file", {"agent", "description", "force_gain", "max_force", "damping", "fingers"});
+  MapReader m(root, "an agent file", agent_schema());
   AgentSpec a;
   a.loc = root.loc();
   a.file = root.loc().file;
@@ -34,7 +75,7 @@ AgentSpec read_agent(const Node& root) {
   a.force_gain = read_positive(m.required("force_gain"), dim::stiffness);
   a.max_force = read_positive(m.required("max_force"), dim::force);
   if (std::optional<Node> damping = m.optional("damping")) a.damping = read_non_negative(*damping, dim::damping);
-  MapReader fingers(m.required("fingers"), "the fingers", {kFingerNames.begin(), kFingerNames.end()});
+  MapReader fingers(m.required("fingers"), "the fingers", fingers_schema());
   for (int i = 0; i < kFingers; ++i) {
     a.fingers[static_cast<size_t>(i)] = read_finger(fingers.required(kFingerNames[i]), kFingerNames[i]);
   }

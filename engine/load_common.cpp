@@ -22,9 +22,53 @@ Eigen::Vector3d read_positive_vector(const Node& node, const Dimension& d) {
 
 }  // namespace
 
+const MapSchema& shape_schema() {
+  using namespace schema;
+  static const MapSchema kSphere{"a sphere about the part's origin",
+                                 {required_key("radius", quantity(dim::length), "the sphere's radius")}};
+  static const MapSchema kBox{"a box centred on the part's origin",
+                              {required_key("size", vector(dim::length), "the edge lengths along x, y, z")}};
+  static const MapSchema kCapsule{
+      "a capsule along the part's z axis",
+      {required_key("radius", quantity(dim::length), "the radius of the cylinder and its end caps"),
+       required_key("length", quantity(dim::length), "the length of the cylinder between the caps")}};
+  static const MapSchema kCylinder{"a cylinder along the part's z axis",
+                                   {required_key("radius", quantity(dim::length), "the cylinder's radius"),
+                                    required_key("length", quantity(dim::length), "the cylinder's length")}};
+  static const MapSchema kEllipsoid{"an ellipsoid about the part's origin",
+                                    {required_key("radii", vector(dim::length), "the semi-axes along x, y, z")}};
+  static const MapSchema kConvex{
+      "the convex hull of points",
+      {required_key("unit", text(), "the length unit of the vertices, such as mm"),
+       required_key("vertices", sequence(plain_vector()), "the points [x, y, z] in that unit")}};
+  static const MapSchema kShape{"exactly one kind of shape and its sizes",
+                                {optional_key("sphere", mapping(kSphere), "a sphere"),
+                                 optional_key("box", mapping(kBox), "a box"),
+                                 optional_key("capsule", mapping(kCapsule), "a capsule"),
+                                 optional_key("cylinder", mapping(kCylinder), "a cylinder"),
+                                 optional_key("ellipsoid", mapping(kEllipsoid), "an ellipsoid"),
+                                 optional_key("convex", mapping(kConvex), "a convex hull")},
+                                true};
+  return kShape;
+}
+
+const MapSchema& range_schema() {
+  using namespace schema;
+  static const MapSchema kRange{"a stretch of the arm, by distance from the fulcrum",
+                                {required_key("from", quantity(dim::length), "where it starts"),
+                                 required_key("to", quantity(dim::length), "where it ends, beyond from")}};
+  return kRange;
+}
+
+std::vector<KeySchema> pose_keys(const std::string& what) {
+  using namespace schema;
+  return {required_key("position", vector(dim::length), "the position of " + what),
+          optional_key("rotation", vector(dim::angle), "the turns of " + what + " about x, then y, then z")};
+}
+
 ShapeSpec read_shape(const Node& node) {
-  static const char* const kKinds[] = {"sphere", "box", "capsule", "cylinder", "ellipsoid", "convex"};
-  MapReader outer(node, "a shape", {kKinds, kKinds + 6});
+  const MapSchema& kinds = shape_schema();
+  MapReader outer(node, "a shape", kinds);
   const auto entries = outer.entries();
   if (entries.size() != 1) {
     node.fail("exactly one of sphere, box, capsule, cylinder, ellipsoid, convex",
@@ -33,14 +77,12 @@ ShapeSpec read_shape(const Node& node) {
   ShapeSpec shape;
   shape.loc = node.loc();
   const std::string kind = entries[0].first;
-  int index = 0;
-  for (int i = 0; i < 6; ++i) {
-    if (kind == kKinds[i]) index = i;  // the reader has rejected any other
+  size_t index = 0;
+  for (size_t i = 0; i < kinds.keys.size(); ++i) {
+    if (kind == kinds.keys[i].key) index = i;  // the reader has rejected any other
   }
   shape.kind = static_cast<ShapeKind>(index);
-  static const std::vector<std::string> kKeys[] = {
-      {"radius"}, {"size"}, {"radius", "length"}, {"radius", "length"}, {"radii"}, {"unit", "vertices"}};
-  MapReader m(outer.required(kind), "a " + kind, kKeys[index]);
+  MapReader m(outer.required(kind), "a " + kind, *kinds.keys[index].value.mapping);
   switch (shape.kind) {
     case ShapeKind::sphere:
       shape.radius = read_positive(m.required("radius"), dim::length);
@@ -87,7 +129,7 @@ PoseSpec read_pose(MapReader& map) {
 }
 
 RangeSpec read_range(const Node& node, const std::string& what) {
-  MapReader m(node, what, {"from", "to"});
+  MapReader m(node, what, range_schema());
   RangeSpec range;
   range.loc = node.loc();
   range.from = read_quantity(m.required("from"), dim::length);

@@ -20,7 +20,41 @@ double read_param(const Node& v, const EffectParam& p) {
   return x;
 }
 
+// An effect's parameters, from its manifest in the registry.
+const MapSchema& effect_schema(const EffectManifest& e) {
+  static const std::vector<MapSchema> kEffects = [] {
+    std::vector<MapSchema> all;
+    for (const EffectManifest& m : effect_registry()) {
+      MapSchema s{m.doc, {schema::optional_key("enabled", schema::boolean(), "false switches the effect off")}};
+      for (const EffectParam& p : m.params) {
+        s.keys.push_back(schema::required_key(
+            p.key, p.dimension == dim::none ? schema::number() : schema::quantity(p.dimension), p.doc));
+      }
+      all.push_back(std::move(s));
+    }
+    return all;
+  }();
+  // Every manifest is the registry's own (find_effect, manifest_of).
+  return kEffects[static_cast<size_t>(&e - effect_registry().data())];
+}
+
 }  // namespace
+
+const MapSchema& effects_schema(EffectHome home) {
+  static const std::vector<MapSchema> kHomes = [] {
+    std::vector<MapSchema> all;
+    for (EffectHome h : {EffectHome::object, EffectHome::actee, EffectHome::measurement}) {
+      MapSchema s{std::string("the effects of ") + home_name(h) + " files (afford describe --effects)"};
+      for (const std::string& name : effect_names_for(h)) {
+        const EffectManifest& e = *find_effect(name);
+        s.keys.push_back(schema::optional_key(name, schema::mapping(effect_schema(e)), e.doc));
+      }
+      all.push_back(std::move(s));
+    }
+    return all;
+  }();
+  return kHomes[static_cast<size_t>(home)];
+}
 
 std::vector<EffectSpec> read_effects(const Node& node, EffectHome home) {
   // An effect of another kind of file gets its own message: a typo gets
@@ -36,15 +70,13 @@ std::vector<EffectSpec> read_effects(const Node& node, EffectHome home) {
       }
     }
   }
-  MapReader m(node, "the effects", effect_names_for(home));
+  MapReader m(node, "the effects", effects_schema(home));
   std::vector<EffectSpec> effects;
   for (const auto& [name, value] : m.entries()) {
     const EffectManifest* manifest = find_effect(name);
     if (manifest == nullptr) throw LogicError("an effect passed MapReader but is not registered: " + name);
     (void)m.required(name);  // reports an effect with no value
-    std::vector<std::string> keys{"enabled"};
-    for (const EffectParam& p : manifest->params) keys.emplace_back(p.key);
-    MapReader params(value, "the effect " + name, keys);
+    MapReader params(value, "the effect " + name, effect_schema(*manifest));
     EffectSpec effect;
     effect.name = name;
     effect.kind = manifest->kind;

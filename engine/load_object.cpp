@@ -23,8 +23,60 @@ void require_region_on_arm(const Node& region_node, const RangeSpec& region, con
   require_on_arm(region_node.child(region_node.yaml()["to"]), region.to, arm);
 }
 
+const MapSchema& lever_schema() {
+  using namespace schema;
+  static const MapSchema kLever{
+      "the lever: its pattern, the arm's extent and the opening angles",
+      {required_key("pattern", choice({"type1-power", "type1-distance", "type1-balance", "type2", "type3"}),
+                    "the lever pattern the emphasis and application regions make"),
+       required_key("arm", mapping(range_schema()), "the extent of the arm, from the fulcrum"),
+       required_key("theta_min", quantity(dim::angle), "the smallest opening angle, 0 deg or more"),
+       required_key("theta_max", quantity(dim::angle), "the largest opening angle, below 180 deg"),
+       required_key("rest", quantity(dim::angle), "the opening angle of the untouched tool")}};
+  return kLever;
+}
+
+const MapSchema& spring_schema() {
+  using namespace schema;
+  static const MapSchema kSpring{
+      "the spring between the arms: exactly one of rest_length and preload",
+      {required_key("constant", quantity(dim::stiffness), "the spring's stiffness"),
+       required_key("position", quantity(dim::length), "where it sits on the arm, away from the fulcrum"),
+       optional_key("rest_length", quantity(dim::length), "its free length"),
+       optional_key("preload", quantity(dim::force), "its force at the rest angle")},
+      false,
+      {{"rest_length", "preload"}}};
+  return kSpring;
+}
+
+const MapSchema& part_schema() {
+  using namespace schema;
+  static const MapSchema kPart = [] {
+    MapSchema m{"a rigid part on one arm",
+                {required_key("name", name(), "the part's name, unique in the object"),
+                 required_key("arm", choice({"fixed", "moving"}), "the arm the part belongs to"),
+                 required_key("shape", mapping(shape_schema()), "the part's collision shape")}};
+    for (KeySchema& k : pose_keys("the part")) m.keys.push_back(std::move(k));
+    return m;
+  }();
+  return kPart;
+}
+
+const MapSchema& functional_pose_schema() {
+  static const MapSchema kPose{"where the tool is held while it works", pose_keys("the tool")};
+  return kPose;
+}
+
+const MapSchema& symmetry_plane_schema() {
+  using namespace schema;
+  static const MapSchema kPlane{"the tool's plane of symmetry",
+                                {required_key("point", vector(dim::length), "a point on the plane"),
+                                 required_key("normal", plain_vector(), "the plane's normal, not all zeros")}};
+  return kPlane;
+}
+
 LeverSpec read_lever(const Node& node) {
-  MapReader m(node, "the lever", {"pattern", "arm", "theta_min", "theta_max", "rest"});
+  MapReader m(node, "the lever", lever_schema());
   LeverSpec lever;
   lever.loc = node.loc();
   const Node pattern = m.required("pattern");
@@ -55,7 +107,7 @@ LeverSpec read_lever(const Node& node) {
 }
 
 SpringSpec read_spring(const Node& node, const LeverSpec& lever) {
-  MapReader m(node, "the spring", {"constant", "position", "rest_length", "preload"});
+  MapReader m(node, "the spring", spring_schema());
   SpringSpec spring;
   spring.loc = node.loc();
   spring.constant = read_positive(m.required("constant"), dim::stiffness);
@@ -133,7 +185,7 @@ void check_pattern(const ObjectSpec& o) {
 }
 
 PartSpec read_part(const Node& node) {
-  MapReader m(node, "a part", {"name", "arm", "shape", "position", "rotation"});
+  MapReader m(node, "a part", part_schema());
   PartSpec part;
   part.loc = node.loc();
   part.name = read_name(m.required("name"));
@@ -145,10 +197,27 @@ PartSpec read_part(const Node& node) {
 
 }  // namespace
 
+const MapSchema& object_schema() {
+  using namespace schema;
+  static const MapSchema kObject{
+      "an object file: an articulated hand tool (objects/README.md)",
+      {required_key("object", name(), "the tool's name"),
+       required_key("description", text(), "what the tool is, in a sentence"),
+       required_key("mass", quantity(dim::mass), "the tool's mass"),
+       required_key("centre_of_gravity", vector(dim::length), "the centre of gravity in the object frame"),
+       required_key("functional_pose", mapping(functional_pose_schema()), "where the tool is held while it works"),
+       required_key("symmetry_plane", mapping(symmetry_plane_schema()), "the tool's plane of symmetry"),
+       required_key("lever", mapping(lever_schema()), "the lever: pattern, arm and opening angles"),
+       required_key("spring", mapping(spring_schema()), "the spring between the arms"),
+       required_key("emphasis", mapping(range_schema()), "where the hand pushes, on the arm"),
+       required_key("application", mapping(range_schema()), "where the tool acts on the actee, on the arm"),
+       required_key("parts", sequence(mapping(part_schema()), 1), "the rigid parts, on both arms"),
+       optional_key("effects", mapping(effects_schema(EffectHome::object)), "optional effects of the lever")}};
+  return kObject;
+}
+
 ObjectSpec read_object(const Node& root) {
-  MapReader m(root, "an object file",
-              {"object", "description", "mass", "centre_of_gravity", "functional_pose", "symmetry_plane",
-               "lever", "spring", "emphasis", "application", "parts", "effects"});
+  MapReader m(root, "an object file", object_schema());
   ObjectSpec o;
   o.loc = root.loc();
   o.file = root.loc().file;
@@ -157,11 +226,11 @@ ObjectSpec read_object(const Node& root) {
   o.mass = read_positive(m.required("mass"), dim::mass);
   o.centre_of_gravity = read_vector(m.required("centre_of_gravity"), dim::length);
   {
-    MapReader pose(m.required("functional_pose"), "the functional pose", {"position", "rotation"});
+    MapReader pose(m.required("functional_pose"), "the functional pose", functional_pose_schema());
     o.functional_pose = read_pose(pose);
   }
   {
-    MapReader plane(m.required("symmetry_plane"), "the symmetry plane", {"point", "normal"});
+    MapReader plane(m.required("symmetry_plane"), "the symmetry plane", symmetry_plane_schema());
     o.symmetry_plane.point = read_vector(plane.required("point"), dim::length);
     o.symmetry_plane.normal = read_direction(plane.required("normal"));
   }

@@ -20,9 +20,50 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kCaseKeys = {"test", "note", "session", "rules", "expect", "reject", "error"};
-const std::vector<std::string> kSessionKeys = {"session", "description", "object", "actee", "agent", "rules",
-                                               "grasps", "timestep", "contact_tolerance", "script"};
+// A session given in place: a session file's keys but the camera (nothing
+// is rendered), its name and description optional and its rules optional
+// when the case gives them.
+const MapSchema& session_in_place_schema() {
+  static const MapSchema kInPlace = [] {
+    MapSchema m{"the session's keys in place (rules may come from the case instead)"};
+    for (const KeySchema& k : session_schema().keys) {
+      if (k.key == "camera") continue;
+      m.keys.push_back(k);
+      if (k.key == "session" || k.key == "description" || k.key == "rules") m.keys.back().required = false;
+    }
+    return m;
+  }();
+  return kInPlace;
+}
+
+// The same when the case gives no rules: the session must.
+const MapSchema& session_in_place_with_rules_schema() {
+  static const MapSchema kWithRules = [] {
+    MapSchema m = session_in_place_schema();
+    for (KeySchema& k : m.keys) k.required = k.required || k.key == "rules";
+    return m;
+  }();
+  return kWithRules;
+}
+
+const MapSchema& expected_function_schema() {
+  using namespace schema;
+  static const MapSchema kExpected{
+      "a function expected, in a time window and a number of times",
+      {required_key("function", name(), "the function's name"),
+       optional_key("within", sequence(quantity(dim::time), 2, 2), "the window [from, to] it must happen in"),
+       optional_key("times", integer(), "how many times it must be inferred, 0 or more")}};
+  return kExpected;
+}
+
+const MapSchema& rejected_function_schema() {
+  using namespace schema;
+  static const MapSchema kRejected{
+      "a function that must not be inferred, in a time window",
+      {required_key("function", name(), "the function's name"),
+       optional_key("within", sequence(quantity(dim::time), 2, 2), "the window [from, to] it must not happen in")}};
+  return kRejected;
+}
 
 // The node of `key` itself in a mapping (a missing file is reported there).
 Node key_node(const Node& map, std::string_view key) {
@@ -68,7 +109,7 @@ void read_expect(const Node& list, std::vector<CaseExpectation>* out) {
       e.function = read_name(item);
       e.loc = item.loc();
     } else {
-      MapReader m(item, "an expected function", {"function", "within", "times"});
+      MapReader m(item, "an expected function", expected_function_schema());
       const Node name = m.required("function");
       e.function = read_name(name);
       e.loc = name.loc();
@@ -91,7 +132,7 @@ void read_reject(const Node& list, std::vector<CaseRejection>* out) {
       r.function = read_name(item);
       r.loc = item.loc();
     } else {
-      MapReader m(item, "a rejected function", {"function", "within"});
+      MapReader m(item, "a rejected function", rejected_function_schema());
       const Node name = m.required("function");
       r.function = read_name(name);
       r.loc = name.loc();
@@ -104,7 +145,7 @@ void read_reject(const Node& list, std::vector<CaseRejection>* out) {
 // A session given in place: its keys checked here, where a missing one can
 // still be reported at the mapping (read_session sees a copy, below).
 void check_inline_session(const Node& node, bool case_has_rules) {
-  MapReader m(node, "the session in place", kSessionKeys);
+  MapReader m(node, "the session in place", session_in_place_schema());
   for (const char* key : {"object", "agent", "grasps", "script"}) m.required(key);
   if (!m.has("rules") && !case_has_rules) {
     node.fail("key 'rules' in the session in place (or in the case)", "no such key");
@@ -352,12 +393,34 @@ std::string times_text(int n) { return n == 1 ? "once" : (n == 2 ? "twice" : std
 
 // ------------------------------------------------------------ reading
 
+const MapSchema& rule_test_schema() {
+  using namespace schema;
+  static const MapSchema kCase = [] {
+    MapSchema m{
+        "a rule test case: a session and the functions it must infer (tests/rules/README.md)",
+        {required_key("test", name(), "the case's name"),
+         optional_key("note", text(), "why the case exists, in a sentence"),
+         required_key("session", any_of({path(), mapping(session_in_place_schema())}),
+                      "the session file, or the session's keys in place"),
+         optional_key("rules", path(), "a function-model file used instead of the session's"),
+         optional_key("expect", sequence(any_of({name(), mapping(expected_function_schema())}), 1),
+                      "functions that must be inferred"),
+         optional_key("reject", sequence(any_of({name(), mapping(rejected_function_schema())}), 1),
+                      "functions that must not be inferred"),
+         optional_key("error", text(), "a text the error of loading the files must contain")}};
+    m.stricter_without.push_back(
+        {"rules", "session", any_of({path(), mapping(session_in_place_with_rules_schema())})});
+    return m;
+  }();
+  return kCase;
+}
+
 RuleCase read_rule_case(const Node& root) {
   const std::string kind = file_kind(root);
   if (kind != "test") {
     root.child(root.yaml().begin()->first).fail("a rule test case (its first key 'test')", "'" + kind + "'");
   }
-  MapReader m(root, "a rule test case", kCaseKeys);
+  MapReader m(root, "a rule test case", rule_test_schema());
   RuleCase c;
   c.file = root.loc().file;
   const Node name = m.required("test");
@@ -400,7 +463,7 @@ CompiledSession compile_rule_case(const RuleCase& c) {
   if (c.session->is_scalar()) {
     session = load_session(resolve(c, c.session_key, *c.session));
   } else {
-    rules_inserted = c.rules && !MapReader(*c.session, "the session in place", kSessionKeys).has("rules");
+    rules_inserted = c.rules && !MapReader(*c.session, "the session in place", session_in_place_schema()).has("rules");
     session = read_session(inline_session_document(c));
   }
   if (c.rules && !rules_inserted) {

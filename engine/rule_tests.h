@@ -91,6 +91,7 @@ struct RuleCase {
 // times in order, a negative `times`, `error` together with expect/reject,
 // a case with nothing to check. The session is not loaded yet.
 RuleCase read_rule_case(const Node& root);
+const MapSchema& rule_test_schema();  // the keys of a rule test case
 RuleCase load_rule_case(const std::string& path);
 
 // Loads the case's session (a file, or the keys in place) and its function

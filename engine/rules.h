@@ -19,12 +19,14 @@ namespace afford {
 class Node;
 struct RuleSet;    // compiled, immutable; shared by sessions and threads
 struct RuleState;  // per session
+struct MapSchema;
 
 // Loads a function-model file (rules/functions.yaml) and compiles it.
 // Throws DataError naming file:line:col of the bad token.
 std::shared_ptr<const RuleSet> load_rules(const std::string& path);
 std::shared_ptr<const RuleSet> read_rules(const std::string& yaml_text, const std::string& name);
 std::shared_ptr<const RuleSet> read_rules(const Node& root);  // an already parsed document
+const MapSchema& functions_schema();  // the keys of a function-model file
 
 // RuleState is opaque outside the engine; this deleter lets callers own one.
 struct RuleStateDeleter {

@@ -211,10 +211,30 @@ void order_by_requirement(RuleSet& rules, const std::vector<std::vector<int>>& r
   rules.functions = std::move(sorted);
 }
 
+const MapSchema& condition_schema() {
+  using namespace schema;
+  static const MapSchema kCondition{
+      "a condition node: an expression that must hold, for a while",
+      {required_key("when", expression(), "a predicate expression (afford rules --list)"),
+       optional_key("for", quantity(dim::time), "how long it must hold (default 0 s)")}};
+  return kCondition;
+}
+
+const MapSchema& function_model_schema() {
+  using namespace schema;
+  static const MapSchema kFunction{
+      "a function model: the conditions under which a function is inferred",
+      {required_key("name", name(), "the function's name, unique in the file"),
+       required_key("description", text(), "what the function is, in a sentence"),
+       optional_key("requires", sequence(name()), "functions that must have been inferred first"),
+       required_key("nodes", sequence(mapping(condition_schema()), 1), "the conditions, in order")}};
+  return kFunction;
+}
+
 std::shared_ptr<const RuleSet> compile_rules(const Node& root) {
   auto rules = std::make_shared<RuleSet>();
   rules->file = root.loc().file;
-  MapReader top(root, "a function-model file", {"functions"});
+  MapReader top(root, "a function-model file", functions_schema());
   const Node list = top.required("functions");
   if (!list.is_sequence() || list.size() == 0) list.fail("a sequence of function models");
   Compiler compiler(*rules);
@@ -222,7 +242,7 @@ std::shared_ptr<const RuleSet> compile_rules(const Node& root) {
   // Names first, so that `required` may name a function defined later.
   std::vector<std::string> names;
   for (size_t i = 0; i < list.size(); ++i) {
-    MapReader f(list[i], "a function model", {"name", "description", "requires", "nodes"});
+    MapReader f(list[i], "a function model", function_model_schema());
     const Node name = f.required("name");
     const std::string n = read_name(name);
     for (const std::string& other : names) {
@@ -232,7 +252,7 @@ std::shared_ptr<const RuleSet> compile_rules(const Node& root) {
   }
   std::vector<std::vector<int>> required(list.size());
   for (size_t i = 0; i < list.size(); ++i) {
-    MapReader f(list[i], "a function model", {"name", "description", "requires", "nodes"});
+    MapReader f(list[i], "a function model", function_model_schema());
     RuleFunction fn;
     fn.loc = list[i].loc();
     fn.name = names[i];
@@ -258,7 +278,7 @@ std::shared_ptr<const RuleSet> compile_rules(const Node& root) {
     const Node nodes = f.required("nodes");
     if (!nodes.is_sequence() || nodes.size() == 0) nodes.fail("a sequence of condition nodes");
     for (size_t j = 0; j < nodes.size(); ++j) {
-      MapReader nm(nodes[j], "a condition node", {"when", "for"});
+      MapReader nm(nodes[j], "a condition node", condition_schema());
       const Node when = nm.required("when");
       RuleNode node;
       node.text = read_string(when);
@@ -280,6 +300,14 @@ std::shared_ptr<const RuleSet> compile_rules(const Node& root) {
 }
 
 }  // namespace
+
+const MapSchema& functions_schema() {
+  using namespace schema;
+  static const MapSchema kFunctions{
+      "a function-model file: the functions afford infers (rules/README.md)",
+      {required_key("functions", sequence(mapping(function_model_schema()), 1), "the function models")}};
+  return kFunctions;
+}
 
 std::shared_ptr<const RuleSet> load_rules(const std::string& path) { return compile_rules(load_yaml_file(path)); }
 

@@ -31,10 +31,47 @@ Node key_node(const Node& map, std::string_view key) {
   return map;
 }
 
-std::vector<std::string> finger_names() { return {kFingerNames.begin(), kFingerNames.end()}; }
+const MapSchema& grip_schema() {
+  using namespace schema;
+  static const MapSchema kGrip{
+      "thumb and index on the arms, by distance from the fulcrum",
+      {required_key("thumb", quantity(dim::length),
+                    "the thumb on the moving arm's outer face, at this signed distance"),
+       required_key("index", any_of({quantity(dim::length), choice({"none"})}),
+                    "the index on the fixed arm's outer face at this distance, or none"),
+       required_key("squeeze", quantity(dim::length), "how far the thumb is advanced past the rest angle, 0 or more")}};
+  return kGrip;
+}
+
+const MapSchema& hand_schema() {
+  static const MapSchema kHand{"the hand's pose in the world", pose_keys("the hand")};
+  return kHand;
+}
+
+// Every finger, each with `value`.
+MapSchema per_finger(const std::string& description, const ValueSchema& value, const std::string& what) {
+  MapSchema m{description};
+  for (const char* finger : kFingerNames) {
+    m.keys.push_back(schema::required_key(finger, value, what + " of the " + finger));
+  }
+  return m;
+}
+
+const MapSchema& fingertips_schema() {
+  static const MapSchema kTips =
+      per_finger("every fingertip's target, in the hand frame", schema::vector(dim::length), "the target");
+  return kTips;
+}
+
+const MapSchema& posture_schema() {
+  static const MapSchema kPosture =
+      per_finger("every finger's joint angles", schema::sequence(schema::quantity(dim::angle), kJoints, kJoints),
+                 "the angles [distal, proximal, metacarpal]");
+  return kPosture;
+}
 
 GripSpec read_grip(const Node& node) {
-  MapReader m(node, "the grip", {"thumb", "index", "squeeze"});
+  MapReader m(node, "the grip", grip_schema());
   GripSpec g;
   const Node thumb = m.required("thumb");
   g.thumb = read_quantity(thumb, dim::length);
@@ -62,7 +99,7 @@ void read_posture(const Node& node, KeyframeSpec& k) {
   }
   if (!node.is_map()) node.fail("a grasp type's name or a mapping of every finger's joint angles");
   k.posture = PostureSource::angles;
-  MapReader fingers(node, "the posture", finger_names());
+  MapReader fingers(node, "the posture", posture_schema());
   for (size_t f = 0; f < kFingers; ++f) {
     const Node angles = fingers.required(kFingerNames[f]);
     if (!angles.is_sequence() || angles.size() != kJoints) {
@@ -75,8 +112,36 @@ void read_posture(const Node& node, KeyframeSpec& k) {
   }
 }
 
+}  // namespace
+
+const MapSchema& keyframe_schema() {
+  using namespace schema;
+  static const MapSchema kKeyframe{
+      "a keyframe: later keyframes carry forward what they omit",
+      {required_key("t", quantity(dim::time), "the keyframe's time, after the previous one's"),
+       optional_key("hand", mapping(hand_schema()), "the hand's pose (required in the first keyframe)"),
+       optional_key("grip", mapping(grip_schema()), "thumb and index on the arms (or fingertips)"),
+       optional_key("fingertips", mapping(fingertips_schema()), "every fingertip's target (or grip)"),
+       optional_key("posture", any_of({name(), mapping(posture_schema())}),
+                    "a grasp type's name, or every finger's joint angles")}};
+  return kKeyframe;
+}
+
+const MapSchema& first_keyframe_schema() {
+  static const MapSchema kFirst = [] {
+    MapSchema m = keyframe_schema();
+    m.description = "the first keyframe: it gives hand, grip or fingertips, and posture";
+    for (KeySchema& k : m.keys) k.required = k.required || k.key == "hand" || k.key == "posture";
+    m.exactly_one_of.push_back({"grip", "fingertips"});
+    return m;
+  }();
+  return kFirst;
+}
+
+namespace {
+
 KeyframeSpec read_keyframe(const Node& node, const KeyframeSpec* previous) {
-  MapReader m(node, "a keyframe", {"t", "hand", "grip", "fingertips", "posture"});
+  MapReader m(node, "a keyframe", keyframe_schema());
   KeyframeSpec k;
   k.loc = node.loc();
   const Node t = m.required("t");
@@ -87,7 +152,7 @@ KeyframeSpec read_keyframe(const Node& node, const KeyframeSpec* previous) {
     t.fail("a time after the previous keyframe's (" + format_quantity(previous->t, dim::time) + ")");
   }
   if (std::optional<Node> hand = m.optional("hand")) {
-    MapReader h(*hand, "the hand", {"position", "rotation"});
+    MapReader h(*hand, "the hand", hand_schema());
     k.hand = read_pose(h);
     k.has_hand = true;
   }
@@ -100,7 +165,7 @@ KeyframeSpec read_keyframe(const Node& node, const KeyframeSpec* previous) {
   }
   if (std::optional<Node> tips = m.optional("fingertips")) {
     k.fingers = FingerSource::fingertips;
-    MapReader fingers(*tips, "the fingertips", finger_names());
+    MapReader fingers(*tips, "the fingertips", fingertips_schema());
     for (size_t f = 0; f < kFingers; ++f) {
       k.fingertip[f] = read_vector(fingers.required(kFingerNames[f]), dim::length);
     }

@@ -135,6 +135,8 @@ inline constexpr double kMaxScriptDuration = 600;
 // that is wrong (an unknown key, a missing first-keyframe key, a time not
 // after the one before, a negative squeeze, ...).
 ScriptSpec read_script(const Node& sequence);
+const MapSchema& keyframe_schema();        // the keys of one keyframe
+const MapSchema& first_keyframe_schema();  // the same, hand, posture and grip or fingertips required
 
 // ------------------------------------------------------------ compiled
 

@@ -19,8 +19,19 @@ constexpr double kMaxTimestep = 0.1;               // s: coarser is no simulatio
 
 // `camera: {position, target, up?, fov?}`: eye and target apart, up not
 // along the view, a field of view inside (0, 180) deg.
+const MapSchema& camera_schema() {
+  using namespace schema;
+  static const MapSchema kCamera{
+      "where the renderer looks from",
+      {required_key("position", vector(dim::length), "the eye, in the world"),
+       required_key("target", vector(dim::length), "the point looked at, away from the eye"),
+       optional_key("up", plain_vector(), "the up direction, across the line of sight"),
+       optional_key("fov", quantity(dim::angle), "the vertical field of view, below 180 deg")}};
+  return kCamera;
+}
+
 SessionCamera read_camera(const Node& node) {
-  MapReader m(node, "the camera", {"position", "target", "up", "fov"});
+  MapReader m(node, "the camera", camera_schema());
   SessionCamera c;
   c.set = true;
   c.position = read_vector(m.required("position"), dim::length);
@@ -42,14 +53,31 @@ SessionCamera read_camera(const Node& node) {
 
 }  // namespace
 
+const MapSchema& session_schema() {
+  using namespace schema;
+  static const MapSchema kSession{
+      "a session file: an object, an actee, an agent and its script (sessions/README.md)",
+      {required_key("session", name(), "the session's name"),
+       required_key("description", text(), "what happens, in a sentence"),
+       required_key("object", any_of({path(), mapping(object_schema())}), "the object file, or its content"),
+       optional_key("actee", mapping(actee_entry_schema()), "the actee and where it is"),
+       required_key("agent", any_of({path(), mapping(agent_schema())}), "the agent file, or its content"),
+       required_key("rules", path(), "the function-model file"),
+       required_key("grasps", path(), "the grasp taxonomy file"),
+       optional_key("timestep", quantity(dim::time), "the simulation step, 10 us to 100 ms (default 1 ms)"),
+       optional_key("contact_tolerance", quantity(dim::length), "how near counts as touching (default 0.5 mm)"),
+       optional_key("camera", mapping(camera_schema()), "where the renderer looks from"),
+       required_key("script", sequence_starting(mapping(first_keyframe_schema()), mapping(keyframe_schema()), 1),
+                    "the agent's keyframes")}};
+  return kSession;
+}
+
 CompiledSession read_session(const Node& root) {
   const std::string kind = file_kind(root);
   if (kind != "session") {
     root.child(root.yaml().begin()->first).fail("a session file (its first key 'session')", "'" + kind + "'");
   }
-  MapReader m(root, "a session file",
-              {"session", "description", "object", "actee", "agent", "rules", "grasps", "timestep",
-               "contact_tolerance", "camera", "script"});
+  MapReader m(root, "a session file", session_schema());
   CompiledSession s;
   s.file = root.loc().file;
   s.files.push_back(s.file);

@@ -66,5 +66,6 @@ CompiledSession load_session(const std::string& path);
 // The same from a parsed document (tests): relative paths are resolved
 // against the folder of the document's name.
 CompiledSession read_session(const Node& root);
+const MapSchema& session_schema();  // the keys of a session file
 
 }  // namespace afford

@@ -135,6 +135,7 @@ struct State {
   std::int64_t history_head = 0;       // frames written
 
   // --- scratch: not part of the simulated state
+  Eigen::Isometry3d moving_arm_world = Eigen::Isometry3d::Identity();  // the moving arm's frame, world, this frame
   std::vector<Eigen::Isometry3d> part_pose;  // per model part, world, this frame (sized once by reset())
   std::vector<WorldBox> part_box;            // their world boxes
   std::unique_ptr<ContactQuery> query;

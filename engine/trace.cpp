@@ -1,20 +1,77 @@
 #include "trace.h"
 
+#include <charconv>
 #include <cmath>
 
 namespace afford {
+
+const char* TraceWriter::units() {
+  return "# units: t s, angle rad, effort_force N, actee_force N, effort_pos m, broken 0/1, grasped 0/1, held 0/1, "
+         "contacts_object_actee count, actee_load N";
+}
 
 const char* TraceWriter::header() {
   return "t,angle,effort_force,actee_force,effort_pos,broken,grasped,held,contacts_object_actee,actee_load";
 }
 
-void TraceWriter::on_start(const Model&, const State&, const RuleSet&) { std::fprintf(out_, "%s\n", header()); }
+void TraceWriter::on_start(const Model&, const State&, const RuleSet&) {
+  std::fprintf(out_, "%s\n%s\n", units(), header());
+}
+
+namespace {
+
+// std::to_chars formats as printf does ("%.6f" is fixed with precision 6,
+// "%.9g" general with precision 9), without the format string parsed and
+// the locale consulted every frame. Each appends a comma.
+char* put_fixed6(char* p, char* end, double v) {
+  p = std::to_chars(p, end, v, std::chars_format::fixed, 6).ptr;
+  *p++ = ',';
+  return p;
+}
+
+char* put_general9(char* p, char* end, double v) {
+  p = std::to_chars(p, end, v, std::chars_format::general, 9).ptr;
+  *p++ = ',';
+  return p;
+}
+
+char* put_int(char* p, char* end, int v) {
+  p = std::to_chars(p, end, v).ptr;
+  *p++ = ',';
+  return p;
+}
+
+}  // namespace
+
+size_t TraceWriter::format_row(char* buf, size_t size, double t, double angle, double effort_force,
+                               double actee_force, double effort_pos, int broken, int grasped, int held,
+                               int contacts, double actee_load) {
+  // Fits whatever the values: t in fixed notation is at most 317 characters
+  // (-1e308), each %.9g field at most 16 ("-1.23456789e-308") and each
+  // integer 11, with its comma: under 480 < kMaxRow.
+  char* const end = buf + size;
+  char* p = buf;
+  p = put_fixed6(p, end, t);
+  p = put_general9(p, end, angle);
+  p = put_general9(p, end, effort_force);
+  p = put_general9(p, end, actee_force);
+  p = put_general9(p, end, effort_pos);
+  p = put_int(p, end, broken);
+  p = put_int(p, end, grasped);
+  p = put_int(p, end, held);
+  p = put_int(p, end, contacts);
+  p = put_general9(p, end, actee_load);
+  p[-1] = '\n';  // the last comma ends the row
+  return static_cast<size_t>(p - buf);
+}
 
 void TraceWriter::on_frame(const Model& m, const State& s, const RuleSet&, const RuleState&) {
   const double effort_pos = s.grasped ? std::abs(s.effort_distance) * (m.theta_rest - s.theta_command) : 0.0;
-  std::fprintf(out_, "%.6f,%.9g,%.9g,%.9g,%.9g,%d,%d,%d,%d,%.9g\n", s.t, s.theta, s.effort_force, s.actee_force,
-               effort_pos, s.condition == ActeeCondition::broken ? 1 : 0, s.grasped ? 1 : 0, s.held ? 1 : 0,
-               s.object_actee.count, s.actee_load);
+  char row[kMaxRow];
+  const size_t n = format_row(row, sizeof row, s.t, s.theta, s.effort_force, s.actee_force, effort_pos,
+                              s.condition == ActeeCondition::broken ? 1 : 0, s.grasped ? 1 : 0, s.held ? 1 : 0,
+                              s.object_actee.count, s.actee_load);
+  std::fwrite(row, 1, n, out_);
 }
 
 void TraceWriter::on_end(const Model&, const State&, const RuleSet&, const RuleState&) { std::fflush(out_); }

@@ -1,7 +1,8 @@
 // Observers that write a session to files (DESIGN.md "Traces").
 //
 // TraceWriter: the trace CSV, one format for simulation and measurement. A
-// header row, then one row per frame, SI units:
+// comment line with the units (`# units: t s, angle rad, ...`, which CSV
+// readers skip as a comment), a header row, then one row per frame, SI units:
 //   t                      s, the frame's time
 //   angle                  rad, the lever's opening angle theta
 //   effort_force           N, F_ag at the emphasis along the rotation direction
@@ -21,8 +22,9 @@
 // event is node_reached, node_lost or inferred; node is the node's index
 // (for inferred, the last node) and text its `when` as written.
 //
-// Both write with fprintf into a FILE* they do not own, and allocate
-// nothing per frame.
+// Both write into a FILE* they do not own and allocate nothing per frame;
+// the trace's numbers are formatted with std::to_chars, the same bytes as
+// printf's "%.6f" (t) and "%.9g" (the rest).
 #pragma once
 
 #include <cstdio>
@@ -39,7 +41,13 @@ class TraceWriter : public Observer {
   void on_start(const Model& model, const State& state, const RuleSet& rules) override;
   void on_frame(const Model& model, const State& state, const RuleSet& rules, const RuleState& rs) override;
   void on_end(const Model& model, const State& state, const RuleSet& rules, const RuleState& rs) override;
+  static const char* units();   // the comment line with the units, without the newline
   static const char* header();  // the header row, without the newline
+  // One row, newline included, into buf; returns its length. buf holds
+  // kMaxRow characters.
+  static constexpr size_t kMaxRow = 512;
+  static size_t format_row(char* buf, size_t size, double t, double angle, double effort_force, double actee_force,
+                           double effort_pos, int broken, int grasped, int held, int contacts, double actee_load);
 
  private:
   std::FILE* out_;

@@ -182,6 +182,9 @@ MapReader::MapReader(const Node& node, std::string what, std::vector<std::string
   }
 }
 
+MapReader::MapReader(const Node& node, std::string what, const MapSchema& schema)
+    : MapReader(node, std::move(what), schema.key_names()) {}
+
 Node MapReader::required(std::string_view key) {
   std::optional<Node> n = optional(key);
   if (!n) node_.fail("key '" + std::string(key) + "' in " + what_, "no such key");

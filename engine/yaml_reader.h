@@ -14,6 +14,7 @@
 
 #include "errors.h"
 #include "files.h"
+#include "schema.h"
 #include "units.h"
 
 namespace afford {
@@ -59,6 +60,8 @@ class MapReader {
  public:
   // what: "the lever", ...; keys: every key the mapping may have.
   MapReader(const Node& node, std::string what, std::vector<std::string> keys);
+  // The same with the keys of a declared table (schema.h).
+  MapReader(const Node& node, std::string what, const MapSchema& schema);
   ~MapReader() = default;
   MapReader(const MapReader&) = delete;
   MapReader& operator=(const MapReader&) = delete;

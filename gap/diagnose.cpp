@@ -11,7 +11,8 @@ namespace {
 constexpr double kMatched = 1.3;        // a held-out RMSE within this factor of the noise is the noise
 constexpr double kRealMargin = 0.05;    // an effect must cut the held-out RMSE by this fraction
 constexpr double kAiccMargin = 10;      // and the training AICc by this much
-constexpr double kAlike = 0.1;          // a runner-up within this fraction of the best's gain is as good
+constexpr double kSeparated = 3;        // a runner-up this many standard errors worse is told apart
+constexpr size_t kBatches = 40;         // batch means for that standard error
 constexpr int kMaxEffects = 3;
 constexpr int kLags = 20;               // Ljung-Box
 constexpr size_t kFolds = 5;            // cross-validation folds, at most
@@ -161,10 +162,61 @@ ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std
   return t;
 }
 
+// How many standard errors worse `b` predicts the held-out samples than
+// `a` (squared errors, sample by sample, the same samples in the same
+// order). Neighbouring samples' errors are correlated, so the standard
+// error comes from the means of kBatches consecutive batches.
+double paired_t(const std::vector<double>& a, const std::vector<double>& b) {
+  const size_t n = std::min(a.size(), b.size());
+  const size_t len = n / kBatches;
+  if (len == 0) return 0.0;
+  std::vector<double> means(kBatches, 0.0);
+  for (size_t k = 0; k < kBatches; ++k) {
+    for (size_t i = k * len; i < (k + 1) * len; ++i) means[k] += b[i] - a[i];
+    means[k] /= static_cast<double>(len);
+  }
+  double mean = 0;
+  for (double m : means) mean += m;
+  mean /= kBatches;
+  double var = 0;
+  for (double m : means) var += (m - mean) * (m - mean);
+  var /= kBatches - 1;
+  const double se = std::sqrt(var / kBatches);
+  return se > 0 ? mean / se : (mean > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+}
+
 std::string effects_text(const std::vector<EffectKind>& set) {
   std::string s;
   for (EffectKind k : set) s += (s.empty() ? "" : " + ") + std::string(manifest_of(k).name);
   return s.empty() ? "the nominal model" : s;
+}
+
+// Each trace's residual under the nominal model and under the set fitted
+// on the folds that did not judge it, as signals to plot.
+std::vector<HeldOutCurve> held_out_curves(const std::vector<Replay>& replays, const Fitter& fitter, const SetFit& nominal,
+                                          const std::vector<Fitter>& folds, const std::vector<std::vector<size_t>>& judged,
+                                          const std::vector<EffectKind>& chosen) {
+  std::vector<HeldOutCurve> curves(replays.size());
+  for (size_t f = 0; f < folds.size(); ++f) {
+    const SetFit fit = folds[f].fit(chosen);
+    for (size_t i : judged[f]) {
+      const Replay& r = replays[i];
+      const std::vector<double> before = fitter.residual(nominal, i), after = folds[f].residual(fit, i);
+      HeldOutCurve& c = curves[i];
+      c.file = r.file;
+      c.t = r.t;
+      c.x = r.x;
+      c.phase = r.phase;
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      for (size_t s = 0; s < r.t.size(); ++s) {
+        const double measured = r.measured[s] * r.to_newtons;
+        c.measured.push_back(measured);
+        c.nominal.push_back(r.fitted[s] ? measured - before[s] : nan);
+        c.fitted.push_back(r.fitted[s] ? measured - after[s] : nan);
+      }
+    }
+  }
+  return curves;
 }
 
 }  // namespace
@@ -212,23 +264,35 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   std::vector<EffectKind> library = options.library.empty() ? fitter.candidates() : options.library;
   const std::vector<EffectKind> applicable = fitter.candidates();
   std::erase_if(library, [&](EffectKind k) { return std::find(applicable.begin(), applicable.end(), k) == applicable.end(); });
-  // A set's parameters on every trace, its score on the folds.
+  // A set's parameters on every trace, its score on the folds, and its
+  // squared error at every held-out sample (to tell two sets apart).
+  struct Scored {
+    SetFit fit;
+    std::vector<double> sq;
+  };
   auto score = [&](const std::vector<EffectKind>& set) {
-    SetFit f = fitter.fit(set);
+    Scored out{fitter.fit(set), {}};
+    SetFit& f = out.fit;
     double sq = 0;
     size_t n = 0;
-    for (const Fitter& fold : fold_fitters) {
-      const SetFit g = fold.fit(set);
+    for (size_t k = 0; k < fold_fitters.size(); ++k) {
+      const SetFit g = fold_fitters[k].fit(set);
       f.valid = f.valid && g.valid;
       sq += g.rmse_test * g.rmse_test * static_cast<double>(g.n_test);
       n += g.n_test;
+      for (size_t i : judged[k]) {
+        const std::vector<double> e = fold_fitters[k].residual(g, i);
+        for (size_t s = 0; s < e.size(); ++s) {
+          if (replays[i].fitted[s]) out.sq.push_back(e[s] * e[s]);
+        }
+      }
     }
     f.rmse_test = n > 0 ? std::sqrt(sq / static_cast<double>(n)) : 0.0;
     f.n_test = n;
-    return f;
+    return out;
   };
 
-  const SetFit nominal = score({});
+  const SetFit nominal = score({}).fit;
   d.rmse_before = nominal.rmse_test;
   auto matched = [&](const SetFit& f) { return f.rmse_test <= kMatched * d.noise; };
   SetFit current = nominal;
@@ -239,27 +303,28 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   d.steps.push_back(line);
   if (!matched(nominal)) {
     for (int step = 0; step < kMaxEffects; ++step) {
-      std::vector<std::pair<SetFit, EffectKind>> tried;
+      std::vector<std::pair<Scored, EffectKind>> tried;
       for (EffectKind k : library) {
         if (std::find(chosen.begin(), chosen.end(), k) != chosen.end()) continue;
         std::vector<EffectKind> set = chosen;
         set.push_back(k);
-        SetFit f = score(set);
-        if (f.valid) tried.emplace_back(std::move(f), k);
+        Scored f = score(set);
+        if (f.fit.valid) tried.emplace_back(std::move(f), k);
       }
       if (tried.empty()) break;
-      std::sort(tried.begin(), tried.end(), [](const auto& a, const auto& b) { return a.first.rmse_test < b.first.rmse_test; });
-      const SetFit& best = tried.front().first;
-      const double gain = current.rmse_test - best.rmse_test;
+      std::sort(tried.begin(), tried.end(), [](const auto& a, const auto& b) { return a.first.fit.rmse_test < b.first.fit.rmse_test; });
+      const SetFit& best = tried.front().first.fit;
       if (best.rmse_test > current.rmse_test * (1 - kRealMargin) || best.aicc > current.aicc - kAiccMargin) {
         std::snprintf(line, sizeof line, "no further effect: the best, %s, would give %.4g N", manifest_of(tried.front().second).name,
                       best.rmse_test);
         d.steps.push_back(line);
         break;
       }
+      // As good: a runner-up the held-out samples do not tell apart from
+      // the best (not significantly worse, sample by sample).
       std::vector<EffectKind> alike = {tried.front().second};
       for (size_t j = 1; j < tried.size(); ++j) {
-        if (tried[j].first.rmse_test - best.rmse_test < kAlike * gain) alike.push_back(tried[j].second);
+        if (paired_t(tried.front().first.sq, tried[j].first.sq) < kSeparated) alike.push_back(tried[j].second);
       }
       chosen.push_back(tried.front().second);
       std::snprintf(line, sizeof line, "+ %s: held-out RMSE %.4g N", manifest_of(tried.front().second).name, best.rmse_test);
@@ -288,6 +353,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     after.push_back(fitter.residual(current, i));
   }
   d.residual = whiteness(replays, after, all);
+  d.rig = m.rig;
+  d.curves = held_out_curves(replays, fitter, nominal, fold_fitters, judged, chosen);
   what_it_follows(replays, after, &d.residual.follows, &d.residual.correlation);
 
   if (matched(nominal)) {

@@ -43,6 +43,18 @@ struct PerTrace {
   std::vector<double> first_parameter;      // SI, per trace
 };
 
+// One judged trace as the plots draw it: the main signal measured, as the
+// nominal model predicts it, and as the effects fitted on the other traces
+// predict it (held out), in N at the effort (lever) or between the plates;
+// NaN where a sample is not fitted (at a limit, after the break, ...).
+struct HeldOutCurve {
+  std::string file;
+  std::vector<double> t;  // s
+  std::vector<double> x;  // rad (lever angle) or m (plate displacement)
+  std::vector<double> measured, nominal, fitted;  // N
+  std::vector<Phase> phase;
+};
+
 struct Diagnosis {
   std::string measurement;
   Verdict verdict = Verdict::none;
@@ -59,6 +71,8 @@ struct Diagnosis {
   std::vector<std::string> judged_on;              // traces (a single trace: its halves), each judged
   size_t folds = 0;                                // by a fit on the traces outside its fold
   std::vector<std::string> steps;                  // the selection, step by step
+  Rig rig = Rig::lever;
+  std::vector<HeldOutCurve> curves;                // every judged trace, for the plots
 };
 
 struct DiagnoseOptions {

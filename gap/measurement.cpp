@@ -26,9 +26,60 @@ Dimension dimension_of(Signal s) {
   return dim::none;
 }
 
+// Where a signal is in the table: its unit is required unless it is a count.
+const MapSchema& column_schema(Signal s) {
+  static const std::vector<MapSchema> kColumns = [] {
+    std::vector<MapSchema> all;
+    for (int i = 0; i < kSignals; ++i) {
+      const Dimension d = dimension_of(static_cast<Signal>(i));
+      const bool count = d == dim::none;
+      all.push_back(MapSchema{"where a signal is in the table",
+                              {schema::required_key("column", schema::text(), "the column's header"),
+                               KeySchema{"unit", schema::text(), !count,
+                                         count ? "none: the signal is a count"
+                                               : "the unit of its values, " + describe_dimension(d)}}});
+    }
+    return all;
+  }();
+  return kColumns[static_cast<size_t>(s)];
+}
+
+const MapSchema& columns_schema() {
+  static const MapSchema kColumns = [] {
+    MapSchema m{"the columns of the signals; t always, and the rig's two"};
+    for (int i = 0; i < kSignals; ++i) {
+      const char* name = signal_name(static_cast<Signal>(i));
+      m.keys.push_back(schema::optional_key(name, schema::mapping(column_schema(static_cast<Signal>(i))),
+                                            std::string("the column of ") + name));
+    }
+    return m;
+  }();
+  return kColumns;
+}
+
+const MapSchema& format_schema() {
+  using namespace schema;
+  static const MapSchema kFormat{
+      "how the trace files are laid out",
+      {optional_key("skip", integer(), "lines before the header, 0 to 10000"),
+       optional_key("footer", integer(), "lines after the table, 0 to 10000"),
+       optional_key("separator", choice({"comma", "tab", "blanks"}), "what separates the columns"),
+       required_key("columns", mapping(columns_schema()), "the columns of the signals")}};
+  return kFormat;
+}
+
+// The actee of a plates rig: the actee alone.
+const MapSchema& plates_actee_schema() {
+  using namespace schema;
+  static const MapSchema kActee{"the actee between the plates",
+                                {required_key("file", any_of({path(), mapping(actee_schema())}),
+                                              "the actee file, or its content as a mapping")}};
+  return kActee;
+}
+
 // `format: {skip, separator, columns: {signal: {column, unit}}}`.
 TableFormat read_format(const Node& node, Rig rig) {
-  MapReader m(node, "the trace format", {"skip", "footer", "separator", "columns"});
+  MapReader m(node, "the trace format", format_schema());
   TableFormat f;
   f.loc = node.loc();
   if (std::optional<Node> skip = m.optional("skip")) {
@@ -43,14 +94,13 @@ TableFormat read_format(const Node& node, Rig rig) {
     const std::string s = read_choice(*sep, {"comma", "tab", "blanks"});
     f.separator = s == "comma" ? ',' : (s == "tab" ? '\t' : ' ');
   }
-  std::vector<std::string> names;
-  for (int i = 0; i < kSignals; ++i) names.emplace_back(signal_name(static_cast<Signal>(i)));
+  const std::vector<std::string> names = columns_schema().key_names();
   const Node columns = m.required("columns");
-  MapReader cols(columns, "the columns", names);
+  MapReader cols(columns, "the columns", columns_schema());
   for (const auto& [name, value] : cols.entries()) {
     int s = 0;
     while (names[static_cast<size_t>(s)] != name) ++s;
-    MapReader c(value, "the column of " + name, {"column", "unit"});
+    MapReader c(value, "the column of " + name, column_schema(static_cast<Signal>(s)));
     f.column[static_cast<size_t>(s)] = read_string(c.required("column"));
     const Dimension want = dimension_of(static_cast<Signal>(s));
     if (std::optional<Node> unit = c.optional("unit")) {
@@ -74,14 +124,36 @@ TableFormat read_format(const Node& node, Rig rig) {
 
 }  // namespace
 
+const MapSchema& measurement_schema() {
+  using namespace schema;
+  static const MapSchema kMeasurement = [] {
+    MapSchema m{
+        "a measurement file: a real tool's traces (gap/README.md)",
+        {required_key("measurement", name(), "the measurement's name"),
+         optional_key("description", text(), "what was measured, in a sentence"),
+         optional_key("rig", choice({"lever", "plates"}), "a tool worked by its lever (default), or plates"),
+         optional_key("object", any_of({path(), mapping(object_schema())}), "the object file (lever rig)"),
+         optional_key("actee", any_of({mapping(actee_entry_schema()), mapping(plates_actee_schema())}),
+                      "the actee, at a distance on the jaw (lever rig) or alone (plates)"),
+         optional_key("effort_at", quantity(dim::length), "where the effort was applied, in the emphasis region"),
+         optional_key("trace", path(), "the trace file (or traces)"),
+         optional_key("traces", sequence(path(), 1, 1000), "the trace files (or trace)"),
+         optional_key("format", mapping(format_schema()), "how the trace files are laid out"),
+         optional_key("effects", mapping(effects_schema(EffectHome::measurement)), "effects to switch on")},
+        false,
+        {{"trace", "traces"}}};
+    m.required_when.push_back({"rig", "plates", {"actee"}, {"object", "effort_at"}});
+    return m;
+  }();
+  return kMeasurement;
+}
+
 Measurement read_measurement(const Node& root) {
   const std::string kind = file_kind(root);
   if (kind != "measurement") {
     root.child(root.yaml().begin()->first).fail("a measurement file (its first key 'measurement')", "'" + kind + "'");
   }
-  MapReader m(root, "a measurement file",
-              {"measurement", "description", "rig", "object", "actee", "effort_at", "trace", "traces", "format",
-               "effects"});
+  MapReader m(root, "a measurement file", measurement_schema());
   Measurement out;
   out.file = root.loc().file;
   out.files.push_back(out.file);
@@ -112,7 +184,7 @@ Measurement read_measurement(const Node& root) {
       if (m.has(key)) key_node(root, key).fail("no '" + std::string(key) + "' with rig: plates (an actee alone)", "one");
     }
     const Node a = m.required("actee");
-    MapReader entry(a, "the actee", {"file"});
+    MapReader entry(a, "the actee", plates_actee_schema());
     out.actee = read_actee(files.document(a, "file", entry.required("file")));
   }
 

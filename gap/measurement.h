@@ -22,6 +22,8 @@
 
 namespace afford {
 
+struct MapSchema;
+
 enum class Rig { lever, plates };
 
 // The signals a trace may carry, SI.
@@ -55,6 +57,7 @@ struct Measurement {
 // on the first mistake, a trace's row and column included.
 Measurement load_measurement(const std::string& path);
 Measurement read_measurement(const Node& root);
+const MapSchema& measurement_schema();  // the keys of a measurement file
 
 // The model a lever measurement describes (no agent).
 Model compile_measurement(const Measurement& m);

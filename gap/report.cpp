@@ -2,20 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 
-#include "trace.h"  // json_string
+#include <nlohmann/json.hpp>
+
 #include "units.h"
 
 namespace afford {
 namespace {
-
-std::string number(double x) {
-  if (!std::isfinite(x)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
 
 std::string when(double t) {
   if (t < 0) return "never";
@@ -105,72 +101,92 @@ std::string report_text(const Diagnosis& d) {
 }
 
 std::string report_json(const Diagnosis& d) {
-  std::string j = "{\"measurement\":" + json_string(d.measurement) + ",\"verdict\":\"" + verdict_name(d.verdict) + "\"";
-  j += ",\"effects\":[";
-  for (size_t e = 0; e < d.effects.size(); ++e) {
-    const EffectManifest& m = manifest_of(d.effects[e].kind);
-    j += std::string(e ? "," : "") + "{\"name\":\"" + m.name + "\",\"parameters\":{";
+  using Json = nlohmann::ordered_json;
+  // Six significant digits, as the text report, whole numbers as integers;
+  // non-finite and "never" (< 0) are null.
+  const auto num = [](double x) -> Json {
+    if (!std::isfinite(x)) return nullptr;
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    const double rounded = std::strtod(buf, nullptr);
+    if (rounded == std::trunc(rounded) && std::abs(rounded) < 1e15) return static_cast<std::int64_t>(rounded);
+    return rounded;
+  };
+  const auto time = [&num](double t) -> Json { return t < 0 ? Json(nullptr) : num(t); };
+
+  Json effects = Json::array();
+  for (const EffectFit& fit : d.effects) {
+    const EffectManifest& m = manifest_of(fit.kind);
+    Json parameters = Json::object();
     for (size_t i = 0; i < m.params.size(); ++i) {
-      j += std::string(i ? "," : "") + "\"" + m.params[i].key + "\":{\"value\":" + number(d.effects[e].value[i]) +
-           ",\"unit\":\"" + (m.params[i].dimension == dim::none ? "" : std::string(si_unit(m.params[i]))) +
-           "\",\"uncertainty\":" + number(d.effects[e].sigma[i]) + "}";
+      parameters[m.params[i].key] = {{"value", num(fit.value[i])},
+                                     {"unit", m.params[i].dimension == dim::none ? "" : si_unit(m.params[i])},
+                                     {"uncertainty", num(fit.sigma[i])}};
     }
-    j += "}}";
+    effects.push_back({{"name", m.name}, {"parameters", parameters}});
   }
-  j += "],\"ambiguous\":[";
-  for (size_t s = 0; s < d.ambiguous.size(); ++s) {
-    j += s ? ",[" : "[";
-    for (size_t k = 0; k < d.ambiguous[s].size(); ++k) {
-      j += std::string(k ? "," : "") + "\"" + manifest_of(d.ambiguous[s][k]).name + "\"";
-    }
-    j += "]";
+  Json ambiguous = Json::array();
+  for (const auto& set : d.ambiguous) {
+    Json names = Json::array();
+    for (EffectKind k : set) names.push_back(manifest_of(k).name);
+    ambiguous.push_back(names);
   }
-  j += "],\"shrink\":" + number(d.shrink) + ",\"rmse_before\":" + number(d.rmse_before) +
-       ",\"rmse_after\":" + number(d.rmse_after) + ",\"noise\":" + number(d.noise) + ",\"unit\":\"N\"";
-  j += ",\"phases\":[";
-  for (size_t p = 0; p < d.phases.size(); ++p) {
-    j += std::string(p ? "," : "") + "{\"name\":" + json_string(phase_name(d.phases[p].phase)) +
-         ",\"samples\":" + std::to_string(d.phases[p].samples) + ",\"share_before\":" + number(d.phases[p].before) +
-         ",\"share_after\":" + number(d.phases[p].after) + "}";
+  Json phases = Json::array();
+  for (const auto& p : d.phases) {
+    phases.push_back({{"name", phase_name(p.phase)},
+                      {"samples", p.samples},
+                      {"share_before", num(p.before)},
+                      {"share_after", num(p.after)}});
   }
-  j += "],\"where\":" + json_string(d.where);
-  j += ",\"residual\":{\"white\":" + std::string(d.residual.white ? "true" : "false") + ",\"ljung_box_q\":" +
-       number(d.residual.q) + ",\"threshold\":" + number(d.residual.threshold) + ",\"follows\":" +
-       json_string(d.residual.follows) + ",\"correlation\":" + number(d.residual.correlation) + "}";
+  Json j = {{"measurement", d.measurement},
+            {"verdict", verdict_name(d.verdict)},
+            {"effects", effects},
+            {"ambiguous", ambiguous},
+            {"shrink", num(d.shrink)},
+            {"rmse_before", num(d.rmse_before)},
+            {"rmse_after", num(d.rmse_after)},
+            {"noise", num(d.noise)},
+            {"unit", "N"},
+            {"phases", phases},
+            {"where", d.where},
+            {"residual",
+             {{"white", d.residual.white},
+              {"ljung_box_q", num(d.residual.q)},
+              {"threshold", num(d.residual.threshold)},
+              {"follows", d.residual.follows},
+              {"correlation", num(d.residual.correlation)}}}};
   if (d.per_trace.computed) {
-    j += ",\"per_trace\":{\"effect\":\"" + std::string(manifest_of(d.per_trace.effect).name) + "\",\"rmse_nominal\":" +
-         number(d.per_trace.rmse_nominal) + ",\"rmse_alone\":" + number(d.per_trace.rmse_alone) + ",\"parameter\":[";
-    for (size_t i = 0; i < d.per_trace.first_parameter.size(); ++i) {
-      j += std::string(i ? "," : "") + number(d.per_trace.first_parameter[i]);
-    }
-    j += "]}";
+    Json parameter = Json::array();
+    for (double v : d.per_trace.first_parameter) parameter.push_back(num(v));
+    j["per_trace"] = {{"effect", manifest_of(d.per_trace.effect).name},
+                      {"rmse_nominal", num(d.per_trace.rmse_nominal)},
+                      {"rmse_alone", num(d.per_trace.rmse_alone)},
+                      {"parameter", parameter}};
   }
-  j += ",\"events\":[";
-  bool first = true;
+  Json events = Json::array(), by_force = Json::array();
   for (size_t i = 0; i < d.by_force_before.size() && i < d.by_force_after.size(); ++i) {
     for (size_t e = 0; e < d.by_force_before[i].events.size(); ++e) {
       const EventGap& b = d.by_force_before[i].events[e];
       const EventGap& a = d.by_force_after[i].events[e];
-      j += std::string(first ? "" : ",") + "{\"trace\":" + json_string(d.by_force_before[i].file) + ",\"event\":\"" +
-           b.event + "\",\"measured_t\":" + (b.measured_t < 0 ? "null" : number(b.measured_t)) +
-           ",\"simulated_t_before\":" + (b.simulated_t < 0 ? "null" : number(b.simulated_t)) +
-           ",\"simulated_t_after\":" + (a.simulated_t < 0 ? "null" : number(a.simulated_t)) +
-           ",\"measured_force\":" + number(b.measured_force) + ",\"simulated_force_before\":" + number(b.simulated_force) +
-           ",\"simulated_force_after\":" + number(a.simulated_force) + "}";
-      first = false;
+      events.push_back({{"trace", d.by_force_before[i].file},
+                        {"event", b.event},
+                        {"measured_t", time(b.measured_t)},
+                        {"simulated_t_before", time(b.simulated_t)},
+                        {"simulated_t_after", time(a.simulated_t)},
+                        {"measured_force", num(b.measured_force)},
+                        {"simulated_force_before", num(b.simulated_force)},
+                        {"simulated_force_after", num(a.simulated_force)}});
     }
+    by_force.push_back({{"trace", d.by_force_before[i].file},
+                        {"angle_rmse_before", num(d.by_force_before[i].angle_rmse)},
+                        {"angle_rmse_after", num(d.by_force_after[i].angle_rmse)},
+                        {"unit", "rad"}});
   }
-  j += "],\"by_force\":[";
-  for (size_t i = 0; i < d.by_force_before.size() && i < d.by_force_after.size(); ++i) {
-    j += std::string(i ? "," : "") + "{\"trace\":" + json_string(d.by_force_before[i].file) + ",\"angle_rmse_before\":" +
-         number(d.by_force_before[i].angle_rmse) + ",\"angle_rmse_after\":" + number(d.by_force_after[i].angle_rmse) +
-         ",\"unit\":\"rad\"}";
-  }
-  j += "]";
-  j += ",\"folds\":" + std::to_string(d.folds) + ",\"traces\":[";
-  for (size_t i = 0; i < d.judged_on.size(); ++i) j += std::string(i ? "," : "") + json_string(d.judged_on[i]);
-  j += "]}";
-  return j;
+  j["events"] = events;
+  j["by_force"] = by_force;
+  j["folds"] = d.folds;
+  j["traces"] = d.judged_on;
+  return j.dump();
 }
 
 }  // namespace afford

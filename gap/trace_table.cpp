@@ -97,7 +97,11 @@ Trace parse_trace(const std::string& text, const std::string& path, const TableF
     if (lines.size() > kMaxTraceRows) fail(SourceLoc{path, static_cast<int>(lines.size()), 1}, "at most " + std::to_string(kMaxTraceRows) + " rows", "more");
     lines.push_back(std::move(l));
   }
-  const auto skip = static_cast<size_t>(format.skip), footer = static_cast<size_t>(format.footer);
+  auto skip = static_cast<size_t>(format.skip);
+  const auto footer = static_cast<size_t>(format.footer);
+  // Comment lines before the header ('#', as afford's own trace.csv starts
+  // with its units) are skipped too.
+  while (skip < lines.size() && lines[skip].starts_with('#')) ++skip;
   if (skip + footer >= lines.size()) {
     fail(SourceLoc{path, static_cast<int>(lines.size()), 1},
          std::to_string(skip) + " lines, a header row and " + std::to_string(footer) + " lines after the table",

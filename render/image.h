@@ -32,8 +32,11 @@ void stroke_rect(Image& img, int x0, int y0, int w, int h, Rgb c);
 void draw_line(Image& img, double x0, double y0, double x1, double y1, Rgb c, double width = 1, double dash = 0);
 // Copies src into dst with its top-left corner at (x, y), clipped.
 void blit(Image& dst, const Image& src, int x, int y);
-// Box-filter reduction by an integer factor (supersampled anti-aliasing).
-Image downsample(const Image& src, int factor);
+// An RGBA picture as OpenGL leaves it (width * height * 4 bytes, bottom row
+// first), turned top-down and averaged over factor x factor blocks
+// (supersampled anti-aliasing) in one pass: the picture comes out
+// width / factor by height / factor.
+Image from_gl_rgba(const std::uint8_t* rgba, int width, int height, int factor);
 
 // ---- the built-in 5x7 bitmap font: printable ASCII, one pixel of spacing;
 // g, p, q and y hang two pixels below the line (leave room under it)

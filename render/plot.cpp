@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "canvas.h"
+
 namespace afford::render {
 namespace {
 
@@ -12,160 +14,7 @@ constexpr Rgb kInk{40, 44, 52}, kGrid{225, 228, 234}, kAxis{120, 126, 138}, kPan
 constexpr Rgb kAngle{52, 101, 164}, kEffort{230, 140, 10}, kActeeForce{200, 30, 30}, kLimit{120, 20, 20};
 constexpr Rgb kReached{40, 150, 70}, kLost{200, 60, 40};
 
-enum class Anchor { start, middle, end };
-
-struct Pt {
-  double x, y;
-};
-
-// The drawing operations the plot needs, with an SVG and a raster backend.
-class Canvas {
- public:
-  virtual ~Canvas() = default;
-  virtual void rect(double x, double y, double w, double h, Rgb fill) = 0;
-  virtual void line(double x0, double y0, double x1, double y1, Rgb c, double width, double dash = 0) = 0;
-  virtual void polyline(const std::vector<Pt>& p, Rgb c, double width) = 0;
-  virtual void polygon(const std::vector<Pt>& p, Rgb fill) = 0;
-  // y is the middle of the text's height.
-  virtual void text(double x, double y, const std::string& s, Rgb c, Anchor a = Anchor::start) = 0;
-  virtual double text_width(const std::string& s) const = 0;
-};
-
-std::string hex(Rgb c) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
-  return buf;
-}
-
-std::string xml(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", v);
-  return buf;
-}
-
-class SvgCanvas : public Canvas {
- public:
-  SvgCanvas(int w, int h) {
-    out_ = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(w) + "\" height=\"" +
-           std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) +
-           "\" font-family=\"DejaVu Sans Mono, monospace\" font-size=\"13\">\n";
-  }
-  std::string finish() { return out_ + "</svg>\n"; }
-  void rect(double x, double y, double w, double h, Rgb fill) override {
-    out_ += "<rect x=\"" + num(x) + "\" y=\"" + num(y) + "\" width=\"" + num(w) + "\" height=\"" + num(h) +
-            "\" fill=\"" + hex(fill) + "\"/>\n";
-  }
-  void line(double x0, double y0, double x1, double y1, Rgb c, double width, double dash) override {
-    out_ += "<line x1=\"" + num(x0) + "\" y1=\"" + num(y0) + "\" x2=\"" + num(x1) + "\" y2=\"" + num(y1) +
-            "\" stroke=\"" + hex(c) + "\" stroke-width=\"" + num(width) + "\"" +
-            (dash > 0 ? " stroke-dasharray=\"" + num(dash) + "\"" : std::string()) + "/>\n";
-  }
-  void polyline(const std::vector<Pt>& p, Rgb c, double width) override {
-    out_ += "<polyline fill=\"none\" stroke=\"" + hex(c) + "\" stroke-width=\"" + num(width) +
-            "\" stroke-linejoin=\"round\" points=\"";
-    for (const Pt& q : p) out_ += num(q.x) + "," + num(q.y) + " ";
-    out_ += "\"/>\n";
-  }
-  void polygon(const std::vector<Pt>& p, Rgb fill) override {
-    out_ += "<polygon fill=\"" + hex(fill) + "\" points=\"";
-    for (const Pt& q : p) out_ += num(q.x) + "," + num(q.y) + " ";
-    out_ += "\"/>\n";
-  }
-  void text(double x, double y, const std::string& s, Rgb c, Anchor a) override {
-    static const char* const kAnchor[] = {"start", "middle", "end"};
-    out_ += "<text x=\"" + num(x) + "\" y=\"" + num(y + 4.5) + "\" fill=\"" + hex(c) + "\" text-anchor=\"" +
-            kAnchor[static_cast<int>(a)] + "\">" + xml(s) + "</text>\n";
-  }
-  double text_width(const std::string& s) const override { return 7.8 * static_cast<double>(s.size()); }
-
- private:
-  std::string out_;
-};
-
-class RasterCanvas : public Canvas {
- public:
-  explicit RasterCanvas(Image* img) : img_(img) {}
-  void rect(double x, double y, double w, double h, Rgb fill) override {
-    fill_rect(*img_, static_cast<int>(std::lround(x)), static_cast<int>(std::lround(y)),
-              static_cast<int>(std::lround(w)), static_cast<int>(std::lround(h)), fill);
-  }
-  void line(double x0, double y0, double x1, double y1, Rgb c, double width, double dash) override {
-    draw_line(*img_, x0, y0, x1, y1, c, width, dash);
-  }
-  void polyline(const std::vector<Pt>& p, Rgb c, double width) override {
-    for (size_t i = 1; i < p.size(); ++i) draw_line(*img_, p[i - 1].x, p[i - 1].y, p[i].x, p[i].y, c, width);
-  }
-  void polygon(const std::vector<Pt>& p, Rgb fill) override {
-    double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
-    for (const Pt& q : p) {
-      x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
-    }
-    for (int y = static_cast<int>(std::floor(y0)); y <= static_cast<int>(std::ceil(y1)); ++y) {
-      for (int x = static_cast<int>(std::floor(x0)); x <= static_cast<int>(std::ceil(x1)); ++x) {
-        const double px = x + 0.5, py = y + 0.5;
-        bool in = false;
-        for (size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
-          if ((p[i].y > py) != (p[j].y > py) &&
-              px < (p[j].x - p[i].x) * (py - p[i].y) / (p[j].y - p[i].y) + p[i].x) {
-            in = !in;
-          }
-        }
-        if (in) img_->set(x, y, fill);
-      }
-    }
-  }
-  void text(double x, double y, const std::string& s, Rgb c, Anchor a) override {
-    const double w = text_width(s);
-    const double left = a == Anchor::start ? x : a == Anchor::middle ? x - w / 2 : x - w;
-    draw_text(*img_, static_cast<int>(std::lround(left)), static_cast<int>(std::lround(y - kGlyphHeight)), s, c, 2);
-  }
-  double text_width(const std::string& s) const override {
-    return static_cast<double>(render::text_width(s, 2));
-  }
-
- private:
-  Image* img_;
-};
-
-// "Nice" tick step: 1, 2 or 5 times a power of ten, about n ticks over span.
-double tick_step(double span, int n) {
-  if (span <= 0) return 1;
-  const double raw = span / n;
-  const double p = std::pow(10, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0, 10.0}) {
-    if (raw <= m * p) return m * p;
-  }
-  return 10 * p;
-}
-
-std::string tick_label(double v, double step) {
-  char buf[32];
-  const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < step * 1e-6 ? 0.0 : v);
-  return buf;
-}
-
 constexpr int kLeft = 86, kRight = 200, kTop = 58, kPanelA = 170, kGap = 34, kPanelB = 230, kLane = 24;
-
-struct Axis {
-  double lo, hi;  // data
-  double top, bottom;  // pixels
-  double y(double v) const { return bottom - (v - lo) / (hi - lo) * (bottom - top); }
-};
 
 void draw(Canvas& c, const Timeline& tl, int width, int height) {
   const double x0 = kLeft, x1 = width - kRight;

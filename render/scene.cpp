@@ -1,6 +1,5 @@
 #include "scene.h"
 
-#include <GL/osmesa.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -8,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gl_api.h"
 #include "mesh.h"
 
 namespace afford::render {
@@ -65,7 +65,7 @@ void clip_planes(const Camera& c, double* near_m, double* far_m) {
   *far_m = d * 6 + 1;
 }
 
-void set_colour(const Colour& c) { glColor4f(c.r, c.g, c.b, c.a); }
+void set_colour(const Colour& c) { gl().Color4f(c.r, c.g, c.b, c.a); }
 
 Colour mix(const Colour& a, const Colour& b, float t) {
   return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t, a.a + (b.a - a.a) * t};
@@ -73,15 +73,15 @@ Colour mix(const Colour& a, const Colour& b, float t) {
 
 void draw(const Mesh& m) {
   if (m.vertices() == 0) return;
-  glVertexPointer(3, GL_FLOAT, 0, m.pos.data());
-  glNormalPointer(GL_FLOAT, 0, m.nrm.data());
-  glDrawArrays(GL_TRIANGLES, 0, m.vertices());
+  gl().VertexPointer(3, GL_FLOAT, 0, m.pos.data());
+  gl().NormalPointer(GL_FLOAT, 0, m.nrm.data());
+  gl().DrawArrays(GL_TRIANGLES, 0, m.vertices());
 }
 
 void push_pose(const Isometry3d& pose) {
-  glPushMatrix();
+  gl().PushMatrix();
   const Eigen::Matrix4f m = pose.matrix().cast<float>();
-  glMultMatrixf(m.data());
+  gl().MultMatrixf(m.data());
 }
 
 }  // namespace
@@ -149,15 +149,15 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   // One rasteriser thread: the same pixels on every run (and no contention
   // with the simulation's own threads). The environment may override it.
   setenv("LP_NUM_THREADS", "1", 0);
-  impl_->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
+  impl_->ctx = gl().CreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
   if (impl_->ctx == nullptr) throw RenderError("OSMesa cannot create an offscreen OpenGL context");
   add_ellipsoid(impl_->unit_sphere, Vector3d::Ones(), 20, 10);
 }
 
 Renderer::~Renderer() {
   if (impl_->ctx == nullptr) return;
-  if (OSMesaGetCurrentContext() == impl_->ctx) OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
-  OSMesaDestroyContext(impl_->ctx);
+  if (gl().GetCurrentContext() == impl_->ctx) gl().MakeCurrent(nullptr, nullptr, 0, 0, 0);
+  gl().DestroyContext(impl_->ctx);
 }
 
 Image Renderer::render(const Model& m, const State& s, const Camera& camera, const RenderOptions& o) {
@@ -166,105 +166,105 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
   if (o.width <= 0 || o.height <= 0 || w > 8192 || h > 8192) throw RenderError("image size out of range");
   Impl& im = *impl_;
   im.buffer.resize(static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
-  if (!OSMesaMakeCurrent(im.ctx, im.buffer.data(), GL_UNSIGNED_BYTE, w, h)) {
+  if (!gl().MakeCurrent(im.ctx, im.buffer.data(), GL_UNSIGNED_BYTE, w, h)) {
     throw RenderError("OSMesa cannot make its context current");
   }
   const Eigen::AlignedBox3d box = scene_box(m, s);
   const double scene = std::max(box.sizes().norm() / 2, 0.02);  // m, a length for markers and arrows
 
-  glViewport(0, 0, w, h);
-  glDisable(GL_DITHER);
-  glClearColor(0, 0, 0, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl().Viewport(0, 0, w, h);
+  gl().Disable(GL_DITHER);
+  gl().ClearColor(0, 0, 0, 1);
+  gl().Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
   // Background: a soft vertical gradient.
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_LIGHTING);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  glBegin(GL_QUADS);
-  glColor3f(0.80f, 0.84f, 0.89f);
-  glVertex2f(-1, -1);
-  glVertex2f(1, -1);
-  glColor3f(0.97f, 0.98f, 0.99f);
-  glVertex2f(1, 1);
-  glVertex2f(-1, 1);
-  glEnd();
+  gl().Disable(GL_DEPTH_TEST);
+  gl().Disable(GL_LIGHTING);
+  gl().MatrixMode(GL_PROJECTION);
+  gl().LoadIdentity();
+  gl().MatrixMode(GL_MODELVIEW);
+  gl().LoadIdentity();
+  gl().Begin(GL_QUADS);
+  gl().Color3f(0.80f, 0.84f, 0.89f);
+  gl().Vertex2f(-1, -1);
+  gl().Vertex2f(1, -1);
+  gl().Color3f(0.97f, 0.98f, 0.99f);
+  gl().Vertex2f(1, 1);
+  gl().Vertex2f(-1, 1);
+  gl().End();
 
   double near_m, far_m;
   clip_planes(camera, &near_m, &far_m);
-  glMatrixMode(GL_PROJECTION);
-  glLoadMatrixf(glm::value_ptr(projection_of(camera, static_cast<double>(w) / h, near_m, far_m)));
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
+  gl().MatrixMode(GL_PROJECTION);
+  gl().LoadMatrixf(glm::value_ptr(projection_of(camera, static_cast<double>(w) / h, near_m, far_m)));
+  gl().MatrixMode(GL_MODELVIEW);
+  gl().LoadIdentity();
 
   // Lights in eye space: a key light from the upper left, a fill from the right.
-  glEnable(GL_LIGHTING);
-  glEnable(GL_LIGHT0);
-  glEnable(GL_LIGHT1);
+  gl().Enable(GL_LIGHTING);
+  gl().Enable(GL_LIGHT0);
+  gl().Enable(GL_LIGHT1);
   const GLfloat key_pos[] = {-0.45f, 0.6f, 1.0f, 0}, key_diffuse[] = {0.78f, 0.78f, 0.76f, 1},
                 key_spec[] = {0.35f, 0.35f, 0.35f, 1};
   const GLfloat fill_pos[] = {0.7f, -0.2f, 0.6f, 0}, fill_diffuse[] = {0.28f, 0.30f, 0.34f, 1},
                 none[] = {0, 0, 0, 1};
   const GLfloat ambient[] = {0.30f, 0.30f, 0.32f, 1};
-  glLightfv(GL_LIGHT0, GL_POSITION, key_pos);
-  glLightfv(GL_LIGHT0, GL_DIFFUSE, key_diffuse);
-  glLightfv(GL_LIGHT0, GL_SPECULAR, key_spec);
-  glLightfv(GL_LIGHT1, GL_POSITION, fill_pos);
-  glLightfv(GL_LIGHT1, GL_DIFFUSE, fill_diffuse);
-  glLightfv(GL_LIGHT1, GL_SPECULAR, none);
-  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
-  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
-  glEnable(GL_COLOR_MATERIAL);
-  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  gl().Lightfv(GL_LIGHT0, GL_POSITION, key_pos);
+  gl().Lightfv(GL_LIGHT0, GL_DIFFUSE, key_diffuse);
+  gl().Lightfv(GL_LIGHT0, GL_SPECULAR, key_spec);
+  gl().Lightfv(GL_LIGHT1, GL_POSITION, fill_pos);
+  gl().Lightfv(GL_LIGHT1, GL_DIFFUSE, fill_diffuse);
+  gl().Lightfv(GL_LIGHT1, GL_SPECULAR, none);
+  gl().LightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+  gl().LightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+  gl().Enable(GL_COLOR_MATERIAL);
+  gl().ColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
   const GLfloat spec[] = {0.25f, 0.25f, 0.25f, 1};
-  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
-  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 40);
-  glEnable(GL_NORMALIZE);
-  glShadeModel(GL_SMOOTH);
+  gl().Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
+  gl().Materialf(GL_FRONT_AND_BACK, GL_SHININESS, 40);
+  gl().Enable(GL_NORMALIZE);
+  gl().ShadeModel(GL_SMOOTH);
 
-  glLoadMatrixf(glm::value_ptr(view_of(camera)));
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glEnable(GL_CULL_FACE);
-  glCullFace(GL_BACK);
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_NORMAL_ARRAY);
+  gl().LoadMatrixf(glm::value_ptr(view_of(camera)));
+  gl().Enable(GL_DEPTH_TEST);
+  gl().DepthFunc(GL_LEQUAL);
+  gl().Enable(GL_CULL_FACE);
+  gl().CullFace(GL_BACK);
+  gl().EnableClientState(GL_VERTEX_ARRAY);
+  gl().EnableClientState(GL_NORMAL_ARRAY);
 
   // Ground: a pale plane with a grid, under everything.
   if (o.ground) {
-    glDisable(GL_LIGHTING);
+    gl().Disable(GL_LIGHTING);
     const double step = box.sizes().maxCoeff() > 0.4 ? 0.05 : 0.01;
     const Vector3d c = box.center();
     const double half = std::ceil(std::max(box.sizes().x(), box.sizes().y()) * 1.5 / step) * step;
     const double x0 = std::floor((c.x() - half) / step) * step, y0 = std::floor((c.y() - half) / step) * step;
     const double z = o.ground_z;
     const int n = static_cast<int>(std::lround(2 * half / step));
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1, 1);
-    glDisable(GL_CULL_FACE);
-    glBegin(GL_QUADS);
-    glColor3f(0.90f, 0.91f, 0.93f);
-    glVertex3d(x0, y0, z);
-    glVertex3d(x0 + n * step, y0, z);
-    glVertex3d(x0 + n * step, y0 + n * step, z);
-    glVertex3d(x0, y0 + n * step, z);
-    glEnd();
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glLineWidth(static_cast<float>(ss));
-    glBegin(GL_LINES);
-    glColor3f(0.76f, 0.79f, 0.84f);
+    gl().Enable(GL_POLYGON_OFFSET_FILL);
+    gl().PolygonOffset(1, 1);
+    gl().Disable(GL_CULL_FACE);
+    gl().Begin(GL_QUADS);
+    gl().Color3f(0.90f, 0.91f, 0.93f);
+    gl().Vertex3d(x0, y0, z);
+    gl().Vertex3d(x0 + n * step, y0, z);
+    gl().Vertex3d(x0 + n * step, y0 + n * step, z);
+    gl().Vertex3d(x0, y0 + n * step, z);
+    gl().End();
+    gl().Disable(GL_POLYGON_OFFSET_FILL);
+    gl().LineWidth(static_cast<float>(ss));
+    gl().Begin(GL_LINES);
+    gl().Color3f(0.76f, 0.79f, 0.84f);
     for (int i = 0; i <= n; ++i) {
-      glVertex3d(x0 + i * step, y0, z);
-      glVertex3d(x0 + i * step, y0 + n * step, z);
-      glVertex3d(x0, y0 + i * step, z);
-      glVertex3d(x0 + n * step, y0 + i * step, z);
+      gl().Vertex3d(x0 + i * step, y0, z);
+      gl().Vertex3d(x0 + i * step, y0 + n * step, z);
+      gl().Vertex3d(x0, y0 + i * step, z);
+      gl().Vertex3d(x0 + n * step, y0 + i * step, z);
     }
-    glEnd();
-    glEnable(GL_CULL_FACE);
-    glEnable(GL_LIGHTING);
+    gl().End();
+    gl().Enable(GL_CULL_FACE);
+    gl().Enable(GL_LIGHTING);
   }
 
   // The acting object: every part on its arm.
@@ -275,7 +275,7 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
     set_colour(p.arm == Arm::moving ? kMovingArm : kFixedArm);
     push_pose((p.arm == Arm::moving ? moving : s.object_pose) * p.in_arm);
     draw(im.shape);
-    glPopMatrix();
+    gl().PopMatrix();
   }
 
   // The actee.
@@ -287,10 +287,10 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
     if (s.condition == ActeeCondition::broken) {
       const double size = m.actee().local_box().sizes().minCoeff();
       shatter(im.shape, 0.13 * size, im.shards);
-      glCullFace(GL_FRONT);  // the inside of the shell, through the cracks
+      gl().CullFace(GL_FRONT);  // the inside of the shell, through the cracks
       set_colour(kInside);
       draw(im.shards);
-      glCullFace(GL_BACK);
+      gl().CullFace(GL_BACK);
       const Colour dark = mix(kActee, Colour{0.22f, 0.14f, 0.07f}, 0.55f);
       set_colour(dark);
       draw(im.shards);
@@ -304,12 +304,12 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
       Eigen::Matrix4f squash = Eigen::Matrix4f::Identity();
       squash.topLeftCorner<3, 3>() =
           (across * Eigen::Matrix3d::Identity() + (k - across) * d * d.transpose()).cast<float>();
-      glMultMatrixf(squash.data());
+      gl().MultMatrixf(squash.data());
       const float tint = static_cast<float>(0.65 * load);
       set_colour(mix(kActee, kStressed, tint));
       draw(im.shape);
     }
-    glPopMatrix();
+    gl().PopMatrix();
   }
 
   // Fingertips, opaque; the thumb in a deeper colour.
@@ -317,12 +317,12 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
     for (int f = 0; f < kFingers; ++f) {
       const double r = m.tip_radius[static_cast<size_t>(f)];
       set_colour(f == 0 ? kThumb : kFinger);
-      glPushMatrix();
+      gl().PushMatrix();
       const Vector3d& p = s.fingertip[static_cast<size_t>(f)];
-      glTranslated(p.x(), p.y(), p.z());
-      glScaled(r, r, r);
+      gl().Translated(p.x(), p.y(), p.z());
+      gl().Scaled(r, r, r);
       draw(im.unit_sphere);
-      glPopMatrix();
+      gl().PopMatrix();
     }
   }
 
@@ -330,59 +330,59 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
   std::vector<GuideLabel> labels;
   if (o.guides != nullptr) {
     const Guides g = posed_guides(*o.guides, s.theta, s.object_pose);
-    glDisable(GL_LIGHTING);
-    glDisable(GL_CULL_FACE);
-    glLineWidth(static_cast<float>(3 * ss));
-    glBegin(GL_LINES);
+    gl().Disable(GL_LIGHTING);
+    gl().Disable(GL_CULL_FACE);
+    gl().LineWidth(static_cast<float>(3 * ss));
+    gl().Begin(GL_LINES);
     for (const GuideSegment& seg : g.segments) {
-      glColor4d(seg.colour.r, seg.colour.g, seg.colour.b, 1);
-      glVertex3d(seg.a.x(), seg.a.y(), seg.a.z());
-      glVertex3d(seg.b.x(), seg.b.y(), seg.b.z());
+      gl().Color4d(seg.colour.r, seg.colour.g, seg.colour.b, 1);
+      gl().Vertex3d(seg.a.x(), seg.a.y(), seg.a.z());
+      gl().Vertex3d(seg.b.x(), seg.b.y(), seg.b.z());
     }
-    glEnd();
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glDepthMask(GL_FALSE);
-    glBegin(GL_TRIANGLES);
+    gl().End();
+    gl().Enable(GL_BLEND);
+    gl().BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl().DepthMask(GL_FALSE);
+    gl().Begin(GL_TRIANGLES);
     for (const GuideMesh& mesh : g.meshes) {
-      glColor4d(mesh.colour.r, mesh.colour.g, mesh.colour.b, mesh.colour.a);
+      gl().Color4d(mesh.colour.r, mesh.colour.g, mesh.colour.b, mesh.colour.a);
       for (const std::array<int, 3>& t : mesh.triangles) {
         for (int k : t) {
           const Vector3d& v = mesh.vertices[static_cast<size_t>(k)];
-          glVertex3d(v.x(), v.y(), v.z());
+          gl().Vertex3d(v.x(), v.y(), v.z());
         }
       }
     }
-    glEnd();
-    glBegin(GL_QUADS);
+    gl().End();
+    gl().Begin(GL_QUADS);
     for (const GuideRect& r : g.rects) {
-      glColor4d(r.colour.r, r.colour.g, r.colour.b, r.colour.a);
+      gl().Color4d(r.colour.r, r.colour.g, r.colour.b, r.colour.a);
       for (const auto& [a, b] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
         const Vector3d v = r.centre + a * r.half_u * r.u + b * r.half_v * r.v;
-        glVertex3d(v.x(), v.y(), v.z());
+        gl().Vertex3d(v.x(), v.y(), v.z());
       }
     }
-    glEnd();
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glEnable(GL_CULL_FACE);
-    glEnable(GL_LIGHTING);
+    gl().End();
+    gl().DepthMask(GL_TRUE);
+    gl().Disable(GL_BLEND);
+    gl().Enable(GL_CULL_FACE);
+    gl().Enable(GL_LIGHTING);
     labels = g.labels;
   }
 
   // Contact points and force arrows (drawn over the bodies they sit in).
-  if (o.contacts || o.forces) glClear(GL_DEPTH_BUFFER_BIT);
+  if (o.contacts || o.forces) gl().Clear(GL_DEPTH_BUFFER_BIT);
   if (o.contacts) {
     const double r = scene * 0.022;
     auto markers = [&](const ContactSet& set, const Colour& c) {
       set_colour(c);
       for (int i = 0; i < std::min(set.count, kMaxContacts); ++i) {
         const Vector3d& p = set.point[static_cast<size_t>(i)].point;
-        glPushMatrix();
-        glTranslated(p.x(), p.y(), p.z());
-        glScaled(r, r, r);
+        gl().PushMatrix();
+        gl().Translated(p.x(), p.y(), p.z());
+        gl().Scaled(r, r, r);
         draw(im.unit_sphere);
-        glPopMatrix();
+        gl().PopMatrix();
       }
     };
     markers(s.agent_object, kAgentContact);
@@ -419,9 +419,9 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
 
   // The hand, translucent, last: the palm box and straight fingers to the tips.
   if (o.hand && m.has_agent) {
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glDepthMask(GL_FALSE);
+    gl().Enable(GL_BLEND);
+    gl().BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl().DepthMask(GL_FALSE);
     im.extra.clear();
     add_box(im.extra, kPalmSize, kPalmCentre);
     for (int f = 0; f < kFingers; ++f) {
@@ -433,27 +433,16 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
     set_colour(kHand);
     push_pose(s.hand);
     draw(im.extra);
-    glPopMatrix();
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    gl().PopMatrix();
+    gl().DepthMask(GL_TRUE);
+    gl().Disable(GL_BLEND);
   }
 
-  glDisableClientState(GL_VERTEX_ARRAY);
-  glDisableClientState(GL_NORMAL_ARRAY);
-  glFinish();
+  gl().DisableClientState(GL_VERTEX_ARRAY);
+  gl().DisableClientState(GL_NORMAL_ARRAY);
+  gl().Finish();
 
-  // RGBA bottom-up -> RGB top-down, then the supersampled average.
-  Image big(w, h);
-  for (int y = 0; y < h; ++y) {
-    const unsigned char* src = &im.buffer[static_cast<size_t>(h - 1 - y) * static_cast<size_t>(w) * 4];
-    std::uint8_t* dst = &big.rgb[static_cast<size_t>(y) * static_cast<size_t>(w) * 3];
-    for (int x = 0; x < w; ++x) {
-      dst[3 * x] = src[4 * x];
-      dst[3 * x + 1] = src[4 * x + 1];
-      dst[3 * x + 2] = src[4 * x + 2];
-    }
-  }
-  Image out = downsample(big, ss);
+  Image out = from_gl_rgba(im.buffer.data(), w, h, ss);
   // Guide labels, at their anchors, moved down past the ones already placed.
   std::vector<Eigen::AlignedBox2i> placed;
   for (const GuideLabel& l : labels) {

@@ -15,6 +15,8 @@
 #include "diagnose.h"
 #include "load.h"
 #include "patch.h"
+#include "plots.h"
+#include "png.h"
 #include "probe.h"
 #include "state.h"
 #include "report.h"
@@ -145,6 +147,58 @@ TEST(Gap, JsonHasTheReportedFields) {
   }
 }
 
+// The plots draw the numbers the report gives: the residual curves' RMS
+// over the fitted samples are the held-out RMSEs before and after.
+TEST(GapPlots, TheCurvesAreTheReportedHeldOutResiduals) {
+  const Diagnosis d = diagnose(load_measurement(lever_measurement("plots", {0.3, 0, 0}).string()));
+  ASSERT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  ASSERT_EQ(d.curves.size(), 2u);
+  double sq_before = 0, sq_after = 0;
+  size_t n = 0;
+  for (const HeldOutCurve& c : d.curves) {
+    ASSERT_EQ(c.t.size(), c.fitted.size());
+    for (size_t s = 0; s < c.t.size(); ++s) {
+      if (std::isnan(c.fitted[s])) continue;
+      sq_before += (c.measured[s] - c.nominal[s]) * (c.measured[s] - c.nominal[s]);
+      sq_after += (c.measured[s] - c.fitted[s]) * (c.measured[s] - c.fitted[s]);
+      ++n;
+    }
+  }
+  ASSERT_GT(n, 10000u);
+  EXPECT_NEAR(std::sqrt(sq_before / static_cast<double>(n)), d.rmse_before, 1e-9 * d.rmse_before);
+  EXPECT_NEAR(std::sqrt(sq_after / static_cast<double>(n)), d.rmse_after, 1e-9 * d.rmse_after);
+
+  // The residual chart shades the phases the sine goes through and shows
+  // both residuals; the loop chart the three curves per trace.
+  const render::Chart residual = residual_chart(d);
+  std::vector<std::string> legend;
+  for (const render::ChartLegendBand& b : residual.band_legend) legend.push_back(b.label);
+  EXPECT_THAT(legend, ::testing::IsSupersetOf({"free closing", "free opening", "reversals"}));
+  EXPECT_EQ(residual.curves.size(), 2u);
+  EXPECT_EQ(residual.markers.size(), 2u);  // where each judged trace starts
+  EXPECT_EQ(loop_chart(d).curves.size(), 6u);
+
+  const fs::path dir = scratch("plots-out") / "plots";
+  const std::vector<std::string> written = write_gap_plots(d, dir.string());
+  EXPECT_EQ(written.size(), 4u);
+  const render::Image png = render::read_png((dir / "loop.png").string());
+  EXPECT_EQ(png.width, render::kChartWidth);
+  EXPECT_EQ(png.height, render::kChartHeight);
+  std::ifstream svg(dir / "residual.svg");
+  const std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(text, HasSubstr("<svg"));
+  EXPECT_THAT(text, HasSubstr("<polyline"));
+  EXPECT_THAT(text, HasSubstr("fitted, held out"));
+  // A folder that cannot be made is an error naming it.
+  write(dir / "file", "x");
+  try {
+    write_gap_plots(d, (dir / "file" / "sub").string());
+    ADD_FAILURE() << "expected an error";
+  } catch (const std::exception& e) {
+    EXPECT_THAT(e.what(), HasSubstr("file/sub"));
+  }
+}
+
 TEST(Gap, APatchAdoptsTheEffectAndLeavesNoGap) {
   const fs::path file = lever_measurement("patch", {0.3, 0, 0});
   const Measurement m = load_measurement(file.string());
@@ -213,6 +267,14 @@ TEST(GapErrors, ACellThatIsNotANumberNamesItsRowAndColumn) {
   csv.replace(csv.find("0.3,5"), 5, "nan,5");
   EXPECT_THAT(measurement_error(kHead + "effort_at: 160 mm\ntrace: t.csv\n", csv),
               HasSubstr("t.csv:2:"));
+}
+
+TEST(GapErrors, CommentLinesBeforeTheHeaderAreSkippedAndRowsKeepTheirFileLines) {
+  // afford's own trace.csv starts with its units as a comment.
+  std::string csv = "# units: t s, angle rad\n# a second comment\n" + good_csv();
+  csv.replace(csv.find("0.3,5"), 5, "0.3,x5");
+  EXPECT_THAT(measurement_error(kHead + "effort_at: 160 mm\ntrace: t.csv\n", csv),
+              HasSubstr("t.csv:4:14: expected a number, found 'x5'"));
 }
 
 TEST(GapErrors, TimeMustIncrease) {

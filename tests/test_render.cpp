@@ -150,6 +150,25 @@ TEST(RenderPng, RejectsCorruptFiles) {
   EXPECT_THROW(render::decode_png(bad), render::PngError);
 }
 
+// OpenGL's rows come bottom first; each output pixel is the rounded mean of
+// its factor x factor block, alpha dropped.
+TEST(RenderImage, GlPixelsAreFlippedAndAveraged) {
+  // 4 x 2 RGBA, bottom row first: bottom row red 0, 10, 20, 30; top row 100, 101, 102, 255.
+  const std::vector<std::uint8_t> rgba = {0,   1, 2, 9, 10,  1, 2, 9, 20,  1, 2, 9, 30,  1, 2, 9,
+                                          100, 5, 6, 9, 101, 5, 6, 9, 102, 5, 6, 9, 255, 5, 6, 9};
+  const Image same = render::from_gl_rgba(rgba.data(), 4, 2, 1);
+  ASSERT_EQ(same.width, 4);
+  ASSERT_EQ(same.height, 2);
+  EXPECT_EQ(same.at(0, 0), (render::Rgb{100, 5, 6}));  // the top row is GL's last
+  EXPECT_EQ(same.at(3, 1), (render::Rgb{30, 1, 2}));
+  const Image half = render::from_gl_rgba(rgba.data(), 4, 2, 2);
+  ASSERT_EQ(half.width, 2);
+  ASSERT_EQ(half.height, 1);
+  EXPECT_EQ(half.at(0, 0), (render::Rgb{53, 3, 4}));   // (0 + 10 + 100 + 101) / 4 = 52.75; (1+1+5+5)/4 = 3
+  EXPECT_EQ(half.at(1, 0), (render::Rgb{102, 3, 4}));  // (20 + 30 + 102 + 255) / 4 = 101.75
+  EXPECT_THROW(render::from_gl_rgba(rgba.data(), 4, 2, 5), std::invalid_argument);
+}
+
 TEST(RenderFont, DrawsEveryPrintableCharacter) {
   for (char c = 33; c < 127; ++c) {
     Image img(8, 10, {0, 0, 0});

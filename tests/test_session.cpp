@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
+#include <random>
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
@@ -421,10 +423,36 @@ TEST(Run, TraceHasTheHeaderAndOneRowPerFrame) {
   const Outputs out = run_with_writers(s);
   EXPECT_EQ(out.result.frames, 1000);
   EXPECT_DOUBLE_EQ(out.result.end_time, 1.0);
-  EXPECT_THAT(out.trace, StartsWith("t,angle,effort_force,actee_force,effort_pos,broken,grasped,held,"
+  EXPECT_THAT(out.trace, StartsWith("# units: t s, angle rad, effort_force N, actee_force N, effort_pos m, "
+                                    "broken 0/1, grasped 0/1, held 0/1, contacts_object_actee count, actee_load N\n"
+                                    "t,angle,effort_force,actee_force,effort_pos,broken,grasped,held,"
                                     "contacts_object_actee,actee_load\n0.001000,"));
-  EXPECT_EQ(count_lines(out.trace), 1001);
+  EXPECT_EQ(count_lines(out.trace), 1002);
   EXPECT_THAT(out.trace, HasSubstr("\n1.000000,"));
+}
+
+// The trace's rows come from std::to_chars: the same bytes as printf's
+// "%.6f" and "%.9g", for ordinary and extreme values alike.
+TEST(Run, TraceRowsAreTheBytesPrintfWouldWrite) {
+  const std::vector<double> values = {0.0, -0.0, 1.0, -1.0, 0.1, 1.0 / 3, 2.0 / 3, 123456789.0, 1234567890123.0,
+                                      1e-5, 1e-300, 5e-324, -2.5e-7, 1e15, 1e16, 1e308, -1.7976931348623157e308,
+                                      0.5235987755982988, 378.00000000001, 999999999.5, 0.0000005,
+                                      std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  std::mt19937_64 random(7);
+  std::vector<double> all = values;
+  for (int i = 0; i < 2000; ++i) {
+    const double mantissa = std::uniform_real_distribution<double>(-10, 10)(random);
+    all.push_back(std::ldexp(mantissa, std::uniform_int_distribution<int>(-60, 60)(random)));
+  }
+  char row[TraceWriter::kMaxRow], expected[1024];
+  for (size_t i = 0; i < all.size(); ++i) {
+    const double a = all[i], b = all[(i * 7 + 3) % all.size()];
+    const int n = static_cast<int>(i % 5) - 1;
+    const size_t len = TraceWriter::format_row(row, sizeof row, a, b, a, b, -a, 1, 0, n, static_cast<int>(i), b);
+    std::snprintf(expected, sizeof expected, "%.6f,%.9g,%.9g,%.9g,%.9g,%d,%d,%d,%d,%.9g\n", a, b, a, b, -a, 1, 0, n,
+                  static_cast<int>(i), b);
+    ASSERT_EQ(std::string(row, len), std::string(expected)) << a << " " << b;
+  }
 }
 
 TEST(Run, TimelineHasOneJsonLinePerEvent) {
@@ -455,7 +483,8 @@ TEST(Run, TheSpongeIsCarriedAndNeverBreaks) {
   // Column 6 of every row is `broken`.
   std::istringstream rows(out.trace);
   std::string row;
-  std::getline(rows, row);
+  std::getline(rows, row);  // the units
+  std::getline(rows, row);  // the header
   int n = 0;
   while (std::getline(rows, row)) {
     size_t comma = 0;
@@ -511,6 +540,7 @@ TEST(HandLimit, NeverExceededInAnyFrameOfAnyShippedSession) {
     const std::string csv = trace.text();
     std::istringstream rows(csv);
     std::string row;
+    std::getline(rows, row);  // # units: ...
     std::getline(rows, row);  // header: t,angle,effort_force,...
     int checked = 0;
     while (std::getline(rows, row)) {
