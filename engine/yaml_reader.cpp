@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <yaml-cpp/eventhandler.h>
+
 #include "did_you_mean.h"
 
 namespace afford {
@@ -67,6 +69,41 @@ void check_shape(const YAML::Node& root, const std::string& name) {
   }
 }
 
+// The start of each document, seen by yaml-cpp's event parser. It ignores
+// the nodes: it only counts documents, and stops at the second.
+struct DocumentStarts : YAML::EventHandler {
+  std::vector<YAML::Mark> starts;
+  void OnDocumentStart(const YAML::Mark& mark) override { starts.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+// A second document ('...' then more) is an error at its start. yaml-cpp
+// 0.7 reads a ',' where no node can start as an empty document without
+// moving on, for ever (YAML::LoadAll then fills the memory): a document
+// that starts where the one before it did is that ','.
+void check_one_document(const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  DocumentStarts documents;
+  while (documents.starts.size() < 2 && parser.HandleNextDocument(documents)) {
+  }
+  if (documents.starts.size() < 2) return;
+  const YAML::Mark& first = documents.starts[0];
+  const YAML::Mark& second = documents.starts[1];
+  if (second.pos == first.pos) {
+    const char found = static_cast<size_t>(second.pos) < text.size() ? text[second.pos] : ' ';
+    fail(loc_of(second, name), "valid YAML", std::string("'") + found + "' where no YAML node can start");
+  }
+  fail(loc_of(second, name), "one YAML document per file", "a second document");
+}
+
 Node parse(const std::string& text, const std::string& name) {
   auto file = std::make_shared<const std::string>(name);
   if (text.size() > kMaxYamlBytes) {
@@ -79,11 +116,8 @@ Node parse(const std::string& text, const std::string& name) {
     fail(second, "one YAML document per file", "a second document ('---')");
   }
   try {
-    const std::vector<YAML::Node> docs = YAML::LoadAll(text);
-    if (docs.size() > 1) {
-      fail(loc_of(docs[1].Mark(), name), "one YAML document per file", "a second document");
-    }
-    const YAML::Node root = docs.empty() ? YAML::Node() : docs[0];
+    check_one_document(text, name);
+    const YAML::Node root = YAML::Load(text);
     if (!root.IsDefined() || root.IsNull()) {
       throw DataError(SourceLoc{name, 1, 1}, "expected a YAML mapping, found an empty file");
     }

@@ -11,7 +11,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev
   libcli11-dev help2man
   nlohmann-json3-dev python3-jsonschema python3-yaml
-  clang libclang-rt-14-dev
+  clang-14 libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -99,6 +99,17 @@ TEST(Hardening, ASecondDocumentIsAnErrorAtItsLine) {
   EXPECT_NO_THROW(load_yaml_string("# leading comment\n---\na: 1\n", "one.yaml"));
 }
 
+// Found by fuzz_actee and nine other YAML fuzzers: yaml-cpp read a ','
+// where no node can start as endless empty documents until memory ran out.
+TEST(Hardening, AStrayCommaIsASyntaxErrorNotAHang) {
+  EXPECT_THAT(error_of([] { load_yaml_string(",", "comma.yaml"); }),
+              HasSubstr("comma.yaml:1:1: expected valid YAML, found ',' where no YAML node can start"));
+  EXPECT_THAT(error_of([] { load_yaml_string("# a comment\n,test: x\nnote: y\n", "lead.yaml"); }),
+              HasSubstr("lead.yaml:2:1: expected valid YAML, found ',' where no YAML node can start"));
+  EXPECT_THAT(error_of([] { load_yaml_string("a: 1\n...\nb: 2\n", "end.yaml"); }),
+              HasSubstr("end.yaml:3:1: expected one YAML document per file, found a second document"));
+}
+
 TEST(Hardening, OnlyRegularFilesAreRead) {
   const std::string fifo = testing::TempDir() + "afford_fifo_" + std::to_string(getpid());
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
