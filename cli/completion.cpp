@@ -77,7 +77,8 @@ void add_completion(CLI::App& app, Run* run) {
   CLI::App* cmd = app.add_subcommand("completion", "print a shell completion script for afford");
   auto shell = std::make_shared<std::string>();
   cmd->add_option("SHELL", *shell, "the shell: bash")->required()->check(CLI::IsMember({"bash"}));
-  cmd->callback([run, &app] {
+  // The callback owns the option's storage: CLI11 writes into it after this returns.
+  cmd->callback([run, &app, shell] {
     *run = [&app] {
       print_bash(app);
       return 0;
