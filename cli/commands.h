@@ -17,6 +17,7 @@ using Run = std::function<int()>;
 
 void add_check(CLI::App& app, Run* run);
 void add_describe(CLI::App& app, Run* run);
+void add_explore(CLI::App& app, Run* run);
 void add_gap(CLI::App& app, Run* run);
 void add_render(CLI::App& app, Run* run);
 void add_guide(CLI::App& app, Run* run);

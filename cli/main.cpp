@@ -72,7 +72,7 @@ int run_program(int argc, char** argv) {
   app.require_subcommand(0, 1);  // one command; a later word is its argument
   app.allow_extras();            // unknown words get our own message below
   Run run;
-  for (auto add : {add_check, add_describe, add_gap, add_render, add_guide, add_rules, add_run, add_live,
+  for (auto add : {add_check, add_describe, add_explore, add_gap, add_render, add_guide, add_rules, add_run, add_live,
                    add_replay, add_schema, add_test, add_completion}) {
     add(app, &run);
   }

@@ -1,4 +1,4 @@
-# cmake --install BUILD --prefix P: the afford program, the four libraries
+# cmake --install BUILD --prefix P: the afford program, the five libraries
 # (static), their headers in include/afford/, the shipped data in
 # share/afford/ and a CMake package, so that another project can write
 #   find_package(afford 0.10 REQUIRED)
@@ -6,10 +6,10 @@
 # and `#include <afford/model.h>`.
 include(CMakePackageConfigHelpers)
 
-set(AFFORD_LIBRARIES afford_engine afford_devices afford_gap afford_render)
+set(AFFORD_LIBRARIES afford_engine afford_devices afford_gap afford_render afford_explore)
 install(TARGETS afford RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS ${AFFORD_LIBRARIES} EXPORT afford-targets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(folder engine devices gap render)
+foreach(folder engine devices gap render explore)
   file(GLOB headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${folder}/*.h)
   install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/afford)
 endforeach()

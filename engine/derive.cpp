@@ -26,13 +26,26 @@ ActeeFit fit_actee(const Model& m) {
   ContactQuery query;
   const double lift = m.actee().support(-Eigen::Vector3d::UnitY());
   constexpr int kSteps = 40;  // placements tried across the application region
+  // Where it does not fit, by reason: the first and last distance of each.
+  struct Span {
+    bool seen = false;
+    double from = 0, to = 0;  // m
+  };
+  Span too_large, out_of_reach, off_jaw;
   bool found = false;
   for (int i = 0; i <= kSteps; ++i) {
     const double r = m.application_from + (m.application_to - m.application_from) * i / kSteps;
     Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
     at.translation() = Eigen::Vector3d(r, lift, 0);
     double theta_c = 0;
-    if (find_contact_angle(m, at, query, &theta_c, nullptr) != JawFit::fits) continue;
+    const JawFit jaw = find_contact_angle(m, at, query, &theta_c, nullptr);
+    if (jaw != JawFit::fits) {
+      Span& span = jaw == JawFit::too_large ? too_large : jaw == JawFit::out_of_reach ? out_of_reach : off_jaw;
+      if (!span.seen) span.from = r;
+      span.seen = true;
+      span.to = r;
+      continue;
+    }
     if (!found) {
       found = true;
       fit.from = r;
@@ -43,15 +56,28 @@ ActeeFit fit_actee(const Model& m) {
     fit.to = r;
   }
   fit.fits = found;
-  if (!found) {
+  if (found) return fit;
+  // Every reason, with where along the application region it holds.
+  auto where = [](const Span& s) {
+    return s.from == s.to ? "at " + format_quantity(s.from, dim::length)
+                          : "from " + format_quantity(s.from, dim::length) + " to " + format_quantity(s.to, dim::length);
+  };
+  std::string why;
+  auto add = [&why](const std::string& reason) { why += (why.empty() ? "" : "; ") + reason; };
+  if (too_large.seen) {
     const InteractionSpace s = interaction_space(m);
-    fit.why = "its thickness across the jaws (" +
-              format_quantity(m.actee().support(Eigen::Vector3d::UnitY()) +
-                                  m.actee().support(-Eigen::Vector3d::UnitY()),
-                              dim::length) +
-              ") exceeds the opening (" + format_quantity(s.gap_from, dim::length) + " to " +
-              format_quantity(s.gap_to, dim::length) + ")";
+    // Too large: fully open, the moving jaw already overlaps it somewhere
+    // along its length (the wedge narrows toward the fulcrum).
+    const double across = m.actee().support(Eigen::Vector3d::UnitY()) + lift;
+    const double along = m.actee().support(Eigen::Vector3d::UnitX()) + m.actee().support(-Eigen::Vector3d::UnitX());
+    add("the jaws fully open (" + format_quantity(s.gap_from, dim::length) + " to " +
+        format_quantity(s.gap_to, dim::length) + " apart along the application region) do not clear it (" +
+        format_quantity(across, dim::length) + " across, " + format_quantity(along, dim::length) +
+        " along the jaws) " + where(too_large));
   }
+  if (out_of_reach.seen) add("the moving jaw never reaches it, even closed, " + where(out_of_reach));
+  if (off_jaw.seen) add("it does not rest on the fixed jaw's face " + where(off_jaw));
+  fit.why = why;
   return fit;
 }
 

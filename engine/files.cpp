@@ -32,11 +32,15 @@ std::string read_regular_file(const std::string& path, size_t max_bytes) {
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(at, "a readable file", std::strerror(errno));
-  // Read no more than the cap even if the file grows meanwhile.
-  std::string text(max_bytes + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  // Read in pieces, no more than the cap even if the file grows meanwhile
+  // (and without setting aside the whole cap for a small file).
+  std::string text;
+  text.reserve(static_cast<size_t>(st.st_size));
+  char piece[1 << 16];
+  while (text.size() <= max_bytes && in.read(piece, sizeof piece).gcount() > 0) {
+    text.append(piece, static_cast<size_t>(in.gcount()));
+  }
   if (in.bad()) fail(at, "a readable file", std::strerror(errno));
-  text.resize(static_cast<size_t>(in.gcount()));
   if (text.size() > max_bytes) {
     fail(at, "a file of at most " + std::to_string(max_bytes) + " bytes", "a file still growing");
   }

@@ -1,0 +1,199 @@
+// afford explore OBJECT [--actees DIR|FILE...] [--agent FILE] [--rules FILE]
+//                [--taxonomy FILE] [--placements N] [--thumbs N] [--efforts N]
+//                [--max-effort N] [--grasps a,b] [--tolerance N] [--threads N]
+//                [--shard K/N] [--out DIR]
+// afford explore --merge DIR... --out DIR
+// One tool on every actee, placement, thumb position, grasp type and effort
+// (explore/explore.h); prints the summary in words and writes the tables,
+// explore.json and the maps (explore/reports.h). A shard writes only its
+// explore.json; --merge joins the shards' into the files of a whole run.
+#include <filesystem>
+#include <iostream>
+
+#include "commands.h"
+#include "data_dir.h"
+#include "explore_json.h"
+#include "option_checks.h"
+#include "parallel.h"
+#include "progress.h"
+#include "reports.h"
+
+namespace afford::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ExploreOptions {
+  std::string object, agent, rules, taxonomy, out_dir, shard, grasps;
+  std::vector<std::string> actees, merge;
+  GridOptions grid;
+  int threads = 0;
+};
+
+// "K/N" with 1 <= K <= N.
+bool parse_shard(const std::string& text, Shard* shard) {
+  int part = 0, count = 0;
+  char slash = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &part, &slash, &count, &extra) != 3 || slash != '/') return false;
+  if (count < 1 || count > 100000 || part < 1 || part > count) return false;
+  shard->part = part;
+  shard->count = count;
+  return true;
+}
+
+CLI::Validator shard_text() {
+  return CLI::Validator(
+      [](std::string& text) {
+        Shard s;
+        return parse_shard(text, &s) ? std::string() : "expected K/N with 1 <= K <= N, found '" + text + "'";
+      },
+      "");
+}
+
+// Every .yaml of a folder (sorted), or the file itself.
+std::vector<std::string> actee_files(const std::vector<std::string>& given) {
+  std::vector<std::string> files;
+  for (const std::string& g : given.empty() ? std::vector<std::string>{shipped_path("actees")} : given) {
+    if (!fs::is_directory(g)) {
+      files.push_back(g);  // a file; load_actee says what is wrong with it
+      continue;
+    }
+    std::vector<std::string> in_dir;
+    for (const auto& entry : fs::directory_iterator(g)) {
+      if (entry.path().extension() == ".yaml") in_dir.push_back(entry.path().string());
+    }
+    if (in_dir.empty()) throw std::runtime_error("--actees " + g + ": no .yaml file in the folder");
+    std::sort(in_dir.begin(), in_dir.end());
+    files.insert(files.end(), in_dir.begin(), in_dir.end());
+  }
+  return files;
+}
+
+std::vector<std::string> split_commas(const std::string& list) {
+  std::vector<std::string> out;
+  if (list.empty()) return out;
+  size_t start = 0;
+  for (size_t comma; (comma = list.find(',', start)) != std::string::npos; start = comma + 1) {
+    out.push_back(list.substr(start, comma - start));
+  }
+  out.push_back(list.substr(start));
+  return out;
+}
+
+void print_written(const std::vector<std::string>& written) {
+  std::cout << "wrote";
+  for (const std::string& w : written) std::cout << " " << w;
+  std::cout << "\n";
+}
+
+int merge_shards(const ExploreOptions& o) {
+  if (!o.object.empty()) return usage_error("explore --merge takes the shards' folders, not an OBJECT");
+  if (o.out_dir.empty()) return usage_error("explore --merge needs --out DIR for the joined files");
+  GridInfo grid;
+  std::vector<ExploreResult> parts;
+  for (const std::string& dir : o.merge) {
+    const std::string file = (fs::path(dir) / "explore.json").string();
+    GridInfo g;
+    ExploreResult r;
+    read_explore_json(file, &g, &r);
+    if (parts.empty()) {
+      grid = g;
+    } else if (!(g == grid)) {
+      throw std::runtime_error(file + ": a shard of another grid than " + o.merge.front());
+    }
+    parts.push_back(std::move(r));
+  }
+  const ExploreResult whole = merge(grid, std::move(parts));
+  const std::vector<std::string> written = write_explore(o.out_dir, grid, whole);
+  std::cout << summary_text(grid, whole);
+  print_written(written);
+  return 0;
+}
+
+int explore_command(const ExploreOptions& o) {
+  if (!o.merge.empty()) return merge_shards(o);
+  if (o.object.empty()) return usage_error("explore needs an OBJECT (or --merge DIR...)");
+  ExploreFiles files;
+  files.object = o.object;
+  files.agent = o.agent.empty() ? shipped_path("agents/hand.yaml") : o.agent;
+  files.rules = o.rules.empty() ? shipped_path("rules/functions.yaml") : o.rules;
+  files.grasps = o.taxonomy.empty() ? shipped_path("rules/grasps.yaml") : o.taxonomy;
+  files.actees = actee_files(o.actees);
+  GridOptions grid = o.grid;
+  grid.grasps = split_commas(o.grasps);
+  Shard shard;
+  if (!o.shard.empty()) parse_shard(o.shard, &shard);  // checked by its validator
+
+  Explorer e;
+  try {
+    e = make_explorer(files, grid);
+  } catch (const GridError& error) {
+    return usage_error(std::string("explore: ") + error.what());
+  }
+  ExploreResult result;
+  {
+    TerminalProgress progress("session");
+    result = explore(e, shard, o.threads > 0 ? o.threads : default_threads(),
+                     [&](size_t done, size_t total) { progress.update(static_cast<long long>(done), static_cast<long long>(total)); });
+  }
+  std::string dir = o.out_dir;
+  if (dir.empty()) {
+    dir = "out/explore-" + e.grid.object;
+    if (!shard.whole()) dir += "-shard-" + std::to_string(shard.part) + "-of-" + std::to_string(shard.count);
+  }
+  if (!shard.whole()) {
+    fs::create_directories(dir);
+    const std::string file = (fs::path(dir) / "explore.json").string();
+    write_file_checked(file, explore_json(e.grid, result));
+    std::cout << "shard " << shard.part << "/" << shard.count << ": " << result.series.size()
+              << " series; join the shards with afford explore --merge DIR... --out DIR\n";
+    print_written({file});
+    return 0;
+  }
+  const std::vector<std::string> written = write_explore(dir, e.grid, result);
+  std::cout << summary_text(e.grid, result);
+  print_written(written);
+  return 0;
+}
+
+}  // namespace
+
+void add_explore(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand(
+      "explore", "try a tool on every actee, placement, thumb, grasp and effort: what it can do, and the thresholds");
+  auto o = std::make_shared<ExploreOptions>();
+  cmd->add_option("OBJECT", o->object, "the tool's object file")->type_name(kFile);
+  cmd->add_option("--actees", o->actees, "actee files or folders of them (default: the shipped actees)")
+      ->type_name("DIR|FILE")
+      ->expected(1, -1);
+  cmd->add_option("--agent", o->agent, "the hand (default: the shipped agents/hand.yaml)")->type_name(kFile);
+  cmd->add_option("--rules", o->rules, "the function models (default: the shipped rules/functions.yaml)")
+      ->type_name(kFile);
+  cmd->add_option("--taxonomy", o->taxonomy, "the grasp taxonomy (default: the shipped rules/grasps.yaml)")
+      ->type_name(kFile);
+  cmd->add_option("--placements", o->grid.placements, "placements per actee, over where it fits (default 3)")
+      ->check(CLI::Range(1, kMaxPerAxis));
+  cmd->add_option("--thumbs", o->grid.thumbs, "thumb positions over the emphasis region (default 3)")
+      ->check(CLI::Range(1, kMaxPerAxis));
+  cmd->add_option("--efforts", o->grid.efforts, "efforts from 0 N up to --max-effort (default 9)")
+      ->check(CLI::Range(1, kMaxPerAxis));
+  cmd->add_option("--max-effort", o->grid.max_effort, "the largest effort, N (default: the hand's limit)")
+      ->type_name("N")
+      ->check(CLI::Range(1e-3, 1e6));
+  cmd->add_option("--grasps", o->grasps, "grasp types tried, comma-separated (default: every type)")
+      ->type_name("NAME,...");
+  cmd->add_option("--tolerance", o->grid.tolerance, "the thresholds' tolerance, N (default 0.5)")
+      ->type_name("N")
+      ->check(CLI::Range(1e-3, 100.0));
+  cmd->add_option("--threads", o->threads, "worker threads (default: every core)")->check(CLI::Range(1, 1024));
+  cmd->add_option("--shard", o->shard, "run the K-th of N disjoint parts (write only DIR/explore.json)")
+      ->type_name("K/N")
+      ->check(shard_text());
+  cmd->add_option("--merge", o->merge, "join the shards' output folders into the files of a whole run")
+      ->type_name(kDir)
+      ->expected(1, -1);
+  cmd->add_option("--out", o->out_dir, "the output folder (default out/explore-OBJECT)")->type_name(kDir);
+  cmd->callback([run, o] { *run = [o] { return explore_command(*o); }; });
+}
+
+}  // namespace afford::cli

@@ -1,0 +1,36 @@
+// What a grid writes for people and for other programs, from the grid and
+// its results alone (so that a merge of shards writes the same bytes as the
+// whole grid run at once):
+//
+//   points.csv      one row per point: actee, placement, thumb, grasp,
+//                   effort, outcome, when each function was first inferred,
+//                   the peaks, whether the actee broke
+//   thresholds.csv  one row per turn of the outcome along the effort
+//   summary.txt     per actee in words
+//   explore.json    all of it (and what `afford explore --merge` reads)
+//   maps/ACTEE.svg, maps/ACTEE.png   the outcome over placement x effort
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "results.h"
+
+namespace afford {
+
+// "none" for -1, else the function's name.
+std::string outcome_name(const GridInfo& g, int outcome);
+
+std::string points_csv(const GridInfo& g, const ExploreResult& r);
+std::string thresholds_csv(const GridInfo& g, const ExploreResult& r);
+
+// Per actee, in words: where it does not fit and why; for each outcome the
+// lowest effort that reaches it, with where (placement, thumb, grasp) and
+// the lever that explains it; the grasps that never reach it.
+std::string summary_text(const GridInfo& g, const ExploreResult& r);
+
+// Writes every file above into dir (made if missing); returns their paths.
+// A failed write throws WriteError (engine/files.h) naming the path.
+std::vector<std::string> write_explore(const std::string& dir, const GridInfo& g, const ExploreResult& r);
+
+}  // namespace afford
