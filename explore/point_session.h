@@ -23,6 +23,9 @@ struct PointTiming {
   double rest = 0.3;     // the hand keeps still at the end
 };
 
+// s, the whole script.
+inline double point_duration(const PointTiming& t) { return t.close + t.squeeze + t.hold + t.lift + t.rest; }
+
 inline constexpr double kLiftHeight = 0.08;  // m, how far the hand lifts the tool, world +z (a carry needs more than 5 cm)
 
 // Where the generated hand grips and how hard it pushes.

@@ -23,6 +23,9 @@ std::string exact(double v) {
 
 std::string q(double si, const Dimension& d) { return format_quantity(si, d); }
 
+// "1 grasp", "3 grasps".
+std::string count(size_t n, const std::string& what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
+
 std::string first_times(const PointResult& p) {
   std::string row;
   for (double t : p.first) row += "," + (t >= 0 ? exact(t) : std::string());
@@ -62,8 +65,11 @@ void summarise_actee(const GridInfo& g, const ExploreResult& r, int actee, std::
     *out += a.name + ": does not fit the " + g.object + ": " + a.why + "\n";
     return;
   }
-  *out += a.name + " (limit " + q(a.limit, dim::force) + (a.breaks ? ", breaks" : ", gives way") + "): tried from " +
-          q(a.placements.front(), dim::length) + " to " + q(a.placements.back(), dim::length) + " along the jaws\n";
+  const std::string span = a.placements.size() == 1 ? "at " + q(a.placements.front(), dim::length)
+                                                     : "from " + q(a.placements.front(), dim::length) + " to " +
+                                                           q(a.placements.back(), dim::length);
+  *out += a.name + " (limit " + q(a.limit, dim::force) + (a.breaks ? ", breaks" : ", gives way") + "): tried " + span +
+          " along the jaws\n";
   // Index 0 stands for no function, then each function in file order.
   std::vector<Seen> seen(g.functions.size() + 1);
   for (Seen& s : seen) s.by_grasp.assign(g.grasps.size(), false);
@@ -79,6 +85,7 @@ void summarise_actee(const GridInfo& g, const ExploreResult& r, int actee, std::
       for (size_t f = 0; f < g.functions.size(); ++f) inferred[f] = inferred[f] || s.points[i].first[f] >= 0;
     }
     for (const Threshold& t : s.thresholds) {
+      for (size_t f = 0; f < g.functions.size(); ++f) inferred[f] = inferred[f] || t.at.first[f] >= 0;
       seen[static_cast<size_t>(t.to + 1)].add(std::min(t.effort, limit), s);
       seen[static_cast<size_t>(t.from + 1)].add(std::min(t.below, limit), s);
     }
@@ -150,9 +157,9 @@ std::string thresholds_csv(const GridInfo& g, const ExploreResult& r) {
 }
 
 std::string summary_text(const GridInfo& g, const ExploreResult& r) {
-  std::string out = "explored the " + g.object + ": " + std::to_string(g.actees.size()) + " actees, " +
-                    std::to_string(g.thumbs.size()) + " thumb positions, " + std::to_string(g.grasps.size()) +
-                    " grasps, " + std::to_string(g.efforts.size()) + " efforts up to " +
+  std::string out = "explored the " + g.object + ": " + count(g.actees.size(), "actee") + ", " +
+                    count(g.thumbs.size(), "thumb position") + ", " + count(g.grasps.size(), "grasp") + ", " +
+                    count(g.efforts.size(), "effort") + " up to " +
                     q(g.efforts.back(), dim::force) + "; thresholds to " + q(g.tolerance, dim::force) + "\n";
   for (size_t a = 0; a < g.actees.size(); ++a) summarise_actee(g, r, static_cast<int>(a), &out);
   return out;
