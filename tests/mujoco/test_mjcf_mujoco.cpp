@@ -119,17 +119,23 @@ class Scene {
   int hinge_ = -1, hand_ = -1;
 };
 
-std::vector<std::string> shipped_sessions() {
+// A tool with a part of every shape, turned in the world, gravity on, a
+// convex actee.
+const std::string kEveryShape = kSource + "/tests/data/mjcf/every-shape.yaml";
+
+// The shipped sessions, and the one of every shape.
+std::vector<std::string> sessions_to_load() {
   std::vector<std::string> out;
   for (const auto& e : fs::directory_iterator(kSource + "/sessions")) {
     if (e.path().extension() == ".yaml") out.push_back(e.path().string());
   }
   std::sort(out.begin(), out.end());
+  out.push_back(kEveryShape);
   return out;
 }
 
-TEST(MjcfMujoco, EveryShippedSessionLoadsAndSteps) {
-  const std::vector<std::string> sessions = shipped_sessions();
+TEST(MjcfMujoco, EverySessionLoadsAndSteps) {
+  const std::vector<std::string> sessions = sessions_to_load();
   ASSERT_FALSE(sessions.empty());
   for (const std::string& file : sessions) {
     SCOPED_TRACE(file);
@@ -144,6 +150,35 @@ TEST(MjcfMujoco, EveryShippedSessionLoadsAndSteps) {
     EXPECT_GE(scene.theta(), session.model.theta_min - 1e-3);
     EXPECT_LE(scene.theta(), session.model.theta_max + 1e-3);
   }
+}
+
+// Every part and the actee are where the engine has them: each shape's
+// centroid (MuJoCo centres a mesh on its own), and the axis of capsules and
+// cylinders (the part's x, MuJoCo's z).
+TEST(MjcfMujoco, EveryShapeIsWhereTheEngineHasIt) {
+  const CompiledSession session = load_session(kEveryShape);
+  const Model& m = session.model;
+  Scene scene(session);
+  mj_forward(scene.model(), scene.data());
+  const auto check = [&](const std::string& name, const Geometry& g, const Eigen::Isometry3d& pose) {
+    SCOPED_TRACE(name);
+    const int id = mj_name2id(scene.model(), mjOBJ_GEOM, name.c_str());
+    ASSERT_GE(id, 0);
+    const Eigen::Vector3d want = pose * g.centroid();
+    const Eigen::Map<const Eigen::Vector3d> got(scene.data()->geom_xpos + 3 * id);
+    EXPECT_LT((got - want).norm(), 1e-8) << got.transpose() << " vs " << want.transpose();
+    const ShapeKind kind = g.spec().kind;
+    if (kind == ShapeKind::capsule || kind == ShapeKind::cylinder) {
+      const mjtNum* r = scene.data()->geom_xmat + 9 * id;  // row-major
+      const Eigen::Vector3d axis(r[2], r[5], r[8]);
+      EXPECT_LT((axis - pose.linear() * Eigen::Vector3d::UnitX()).norm(), 1e-8);
+    }
+  };
+  for (const ModelPart& p : m.parts) {
+    const Eigen::Isometry3d arm = p.arm == Arm::moving ? moving_arm_pose(m.theta_rest) : Eigen::Isometry3d::Identity();
+    check(p.name, p.geometry, m.object_start * arm * p.in_arm);
+  }
+  check("actee", m.actee(), m.actee_start);
 }
 
 // Turns the command from the rest angle to `command` over half a second,
