@@ -17,8 +17,9 @@ namespace {
 // that the contact force is the solver's stiffness and not the impedance's
 // ramp.
 constexpr double kContactImpedance = 0.99;
-// Joint limits and the pivot's friction loss: as hard as MuJoCo allows
-// (a time constant of two steps), so the stops and the stiction hold.
+// The hinge's limits: a constant impedance as for the contacts; with the
+// smallest time constant MuJoCo takes (two steps, for the limits and the
+// pivot's friction loss) the stops and the stiction hold.
 constexpr double kLimitImpedance = 0.99;
 
 std::string num(double v) {
