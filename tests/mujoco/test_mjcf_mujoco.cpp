@@ -156,7 +156,8 @@ TEST(MjcfMujoco, EverySessionLoadsAndSteps) {
 
 // Every part and the actee are where the engine has them: each shape's
 // centroid (MuJoCo centres a mesh on its own), and the axis of capsules and
-// cylinders (the part's x, MuJoCo's z).
+// cylinders (the part's x, MuJoCo's z); the moving arm weighs what the
+// engine's does, with its centre where the engine's is.
 TEST(MjcfMujoco, EveryShapeIsWhereTheEngineHasIt) {
   const CompiledSession session = load_session(kEveryShape);
   const Model& m = session.model;
@@ -181,6 +182,11 @@ TEST(MjcfMujoco, EveryShapeIsWhereTheEngineHasIt) {
     check(p.name, p.geometry, m.object_start * arm * p.in_arm);
   }
   check("actee", m.actee(), m.actee_start);
+  // The moving arm's mass and centre are the engine's (its weight's torque).
+  const int arm = mj_name2id(scene.model(), mjOBJ_BODY, "moving_arm");
+  EXPECT_NEAR(scene.model()->body_mass[arm], m.arm_mass, 1e-8 * m.arm_mass);  // the scene's 9 digits
+  const Eigen::Map<const Eigen::Vector3d> centre(scene.data()->xipos + 3 * arm);
+  EXPECT_LT((centre - m.object_start * moving_arm_pose(m.theta_rest) * m.arm_centre).norm(), 1e-8);
 }
 
 // Turns the command from the rest angle to `command` over half a second,
