@@ -205,8 +205,9 @@ std::string mjcf_scene(const CompiledSession& session) {
     << "  written by afford export (MJCF) from " << comment_text(session.file) << "; for MuJoCo 2.2.2.\n"
     << "  World z up, SI units, angles in radians. The tool is fixed at its functional\n"
     << "  pose (the script's carrying of the tool is not in the scene): the fixed arm's\n"
-    << "  parts are geoms of body 'tool', the moving arm a body turning about +z through\n"
-    << "  the object origin on joint 'hinge', whose angle is theta (opening positive).\n"
+    << "  parts are geoms (named part:NAME) of body 'tool', the moving arm a body turning\n"
+    << "  about +z through the object origin on joint 'hinge', whose angle is theta (opening\n"
+    << "  positive).\n"
     << "  Hinge: limits [theta_min, theta_max]; the spring S_k = " << num(m.spring_constant) << " N/m at S_p = "
     << num(m.spring_position) << " m with its preload " << num(m.spring_preload) << " N\n"
     << "  is the torsion spring stiffness = S_k S_p^2 = " << num(spring.stiffness)
@@ -316,7 +317,7 @@ std::string mjcf_scene(const CompiledSession& session) {
   for (const ModelPart& p : m.parts) {
     if (p.arm != Arm::fixed) continue;
     x << "      "
-      << geom(p.name, p.geometry.spec(), p.in_arm, fixed_mass * p.geometry.volume() / fixed_volume, 1, 0, "mesh:" + p.name)
+      << geom("part:" + p.name, p.geometry.spec(), p.in_arm, fixed_mass * p.geometry.volume() / fixed_volume, 1, 0, "mesh:" + p.name)
       << "\n";
   }
   x << "      <body name=\"moving_arm\" quat=\"" << quat(moving_arm_pose(m.theta_rest).linear()) << "\">\n"
@@ -330,7 +331,7 @@ std::string mjcf_scene(const CompiledSession& session) {
   for (const ModelPart& p : m.parts) {
     if (p.arm != Arm::moving) continue;
     x << "        "
-      << geom(p.name, p.geometry.spec(), p.in_arm, m.arm_mass * p.geometry.volume() / moving_volume, 2, 0,
+      << geom("part:" + p.name, p.geometry.spec(), p.in_arm, m.arm_mass * p.geometry.volume() / moving_volume, 2, 0,
               "mesh:" + p.name)
       << "\n";
   }

@@ -68,7 +68,7 @@ TEST(Mjcf, SceneTextOfTheNutcracker) {
         "<numeric name=\"hand_schedule\" size=\"10\" data=\"0 0.523598776 0.4 0.523598776 2.9 0.242348776 3.6 "
         "0.523598776 4 0.523598776\"/>",
         "<body name=\"actee\" pos=\"0.06 0.0141 0.1\"", "type=\"ellipsoid\" size=\"0.018 0.0141 0.0141\"",
-        "<geom name=\"moving_arm\" type=\"box\" size=\"0.0925 0.006 0.008\" pos=\"0.0925 0.006 0\""}) {
+        "<geom name=\"part:moving_arm\" type=\"box\" size=\"0.0925 0.006 0.008\" pos=\"0.0925 0.006 0\""}) {
     EXPECT_NE(xml.find(want), std::string::npos) << want;
   }
   // An XML comment may not hold "--": the header stays a comment.

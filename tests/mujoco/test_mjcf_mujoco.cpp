@@ -179,7 +179,7 @@ TEST(MjcfMujoco, EveryShapeIsWhereTheEngineHasIt) {
   };
   for (const ModelPart& p : m.parts) {
     const Eigen::Isometry3d arm = p.arm == Arm::moving ? moving_arm_pose(m.theta_rest) : Eigen::Isometry3d::Identity();
-    check(p.name, p.geometry, m.object_start * arm * p.in_arm);
+    check("part:" + p.name, p.geometry, m.object_start * arm * p.in_arm);
   }
   check("actee", m.actee(), m.actee_start);
   // The moving arm's mass and centre are the engine's (its weight's torque).
