@@ -8,17 +8,14 @@
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <filesystem>
-#include <memory>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "derive.h"
-#include "files.h"
 #include "mjcf_scene.h"
+#include "mujoco_harness.h"
 #include "session.h"
 #include "stages.h"
 #include "terms.h"
@@ -29,97 +26,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kSource = AFFORD_SOURCE_DIR;
-
-// A loaded scene and the harness the scene's header comment asks for:
-// the hand's schedule and the progressive spring.
-class Scene {
- public:
-  explicit Scene(const CompiledSession& session) {
-    const fs::path file = fs::temp_directory_path() /
-                          ("afford-mjcf-" + session.name + "-" + std::to_string(::getpid()) + ".xml");
-    write_file_checked(file.string(), mjcf_scene(session));
-    std::array<char, 1000> error{};
-    m_ = mj_loadXML(file.c_str(), nullptr, error.data(), static_cast<int>(error.size()));
-    fs::remove(file);
-    if (m_ == nullptr) throw std::runtime_error(session.name + ": " + error.data());
-    d_ = mj_makeData(m_);
-    mj_resetDataKeyframe(m_, d_, 0);
-    hinge_ = mj_name2id(m_, mjOBJ_JOINT, "hinge");
-    hand_ = mj_name2id(m_, mjOBJ_ACTUATOR, "hand");
-  }
-  ~Scene() {
-    mj_deleteData(d_);
-    mj_deleteModel(m_);
-  }
-  Scene(const Scene&) = delete;
-  Scene& operator=(const Scene&) = delete;
-
-  const mjModel* model() const { return m_; }
-  mjData* data() { return d_; }
-  bool has_hand() const { return hand_ >= 0; }
-  double theta() const { return d_->qpos[m_->jnt_qposadr[hinge_]]; }
-  double hand_torque() const { return d_->actuator_force[hand_]; }  // N*m, closing negative
-
-  // The custom numeric `name`, element i.
-  double numeric(const char* name, int i = 0) const {
-    const int id = mj_name2id(m_, mjOBJ_NUMERIC, name);
-    if (id < 0 || i >= m_->numeric_size[id]) throw std::runtime_error(std::string("no numeric ") + name);
-    return m_->numeric_data[m_->numeric_adr[id] + i];
-  }
-
-  // The schedule's commanded angle at t, interpolated.
-  double scheduled(double t) const {
-    const int id = mj_name2id(m_, mjOBJ_NUMERIC, "hand_schedule");
-    const mjtNum* s = m_->numeric_data + m_->numeric_adr[id];
-    const int n = m_->numeric_size[id] / 2;
-    if (t <= s[0]) return s[1];
-    for (int k = 1; k < n; ++k) {
-      if (t <= s[2 * k]) {
-        const double w = (t - s[2 * k - 2]) / (s[2 * k] - s[2 * k - 2]);
-        return (1 - w) * s[2 * k - 1] + w * s[2 * k + 1];
-      }
-    }
-    return s[2 * n - 1];
-  }
-
-  // One mj_step with the progressive spring applied; ctrl as set.
-  void step() {
-    const double d = numeric("spring_arm") * (numeric("springref") - theta());
-    const double cubic = d > 0 ? numeric("spring_cubic") * d * d * d * numeric("spring_arm") : 0.0;
-    d_->qfrc_applied[m_->jnt_dofadr[hinge_]] = cubic - numeric("gravity_extra") * std::cos(theta());
-    mj_step(m_, d_);
-  }
-
-  // No more contacts for the actee (what the harness does when it breaks).
-  void drop_actee() { m_->geom_conaffinity[mj_name2id(m_, mjOBJ_GEOM, "actee")] = 0; }
-
-  // The normal force (N) of the actee's contacts with the moving arm.
-  double actee_load() const {
-    const int arm = mj_name2id(m_, mjOBJ_BODY, "moving_arm");
-    const int actee = mj_name2id(m_, mjOBJ_BODY, "actee");
-    double load = 0;
-    for (int i = 0; i < d_->ncon; ++i) {
-      const int b1 = m_->geom_bodyid[d_->contact[i].geom1], b2 = m_->geom_bodyid[d_->contact[i].geom2];
-      if (!((b1 == arm && b2 == actee) || (b1 == actee && b2 == arm))) continue;
-      mjtNum f[6];
-      mj_contactForce(m_, d_, i, f);
-      load += f[0];
-    }
-    return load;
-  }
-
-  // Any warning MuJoCo raised (bad accelerations, instability, ...).
-  int warnings() const {
-    int n = 0;
-    for (int i = 0; i < mjNWARNING; ++i) n += d_->warning[i].number;
-    return n;
-  }
-
- private:
-  mjModel* m_ = nullptr;
-  mjData* d_ = nullptr;
-  int hinge_ = -1, hand_ = -1;
-};
 
 // A tool with a part of every shape, turned in the world, gravity on, a
 // convex actee.
@@ -142,9 +48,9 @@ TEST(MjcfMujoco, EverySessionLoadsAndSteps) {
   for (const std::string& file : sessions) {
     SCOPED_TRACE(file);
     const CompiledSession session = load_session(file);
-    Scene scene(session);
+    MujocoScene scene(session);
     for (int i = 0; i < 1000; ++i) {
-      if (scene.has_hand()) scene.data()->ctrl[0] = scene.scheduled(scene.data()->time);
+      scene.command(scene.scheduled(scene.data()->time));
       scene.step();
     }
     EXPECT_EQ(scene.warnings(), 0);
@@ -161,7 +67,7 @@ TEST(MjcfMujoco, EverySessionLoadsAndSteps) {
 TEST(MjcfMujoco, EveryShapeIsWhereTheEngineHasIt) {
   const CompiledSession session = load_session(kEveryShape);
   const Model& m = session.model;
-  Scene scene(session);
+  MujocoScene scene(session);
   mj_forward(scene.model(), scene.data());
   const auto check = [&](const std::string& name, const Geometry& g, const Eigen::Isometry3d& pose) {
     SCOPED_TRACE(name);
@@ -193,11 +99,11 @@ TEST(MjcfMujoco, EveryShapeIsWhereTheEngineHasIt) {
 // as a script's squeeze does (a step would set the arm ringing on the
 // undamped hand: the engine's arm has no inertia, MuJoCo's has its mass),
 // holds it for a second and returns the settled angle.
-double settle(Scene& scene, double rest, double command) {
+double settle(MujocoScene& scene, double rest, double command) {
   constexpr double kRamp = 0.5, kHold = 1.0;  // s
   while (scene.data()->time < kRamp + kHold) {
     const double w = std::min(scene.data()->time / kRamp, 1.0);
-    scene.data()->ctrl[0] = (1 - w) * rest + w * command;
+    scene.command((1 - w) * rest + w * command);
     scene.step();
   }
   return scene.theta();
@@ -237,7 +143,7 @@ void expect_hinge_balance(const std::string& file) {
   SCOPED_TRACE(file);
   const CompiledSession session = load_session(file);
   const Model& m = session.model;
-  Scene scene(session);
+  MujocoScene scene(session);
   scene.drop_actee();
   const HandServo hand = hand_servo(session);
   const double command = m.theta_rest - 0.020 / hand.lever_arm;
@@ -281,7 +187,7 @@ TEST(MjcfMujoco, OpeningTorqueIsTheEffortForNoLoad) {
 TEST(MjcfMujoco, ActeeLoadMatchesTheEngine) {
   const CompiledSession session = load_session(kSource + "/sessions/paper-nutcracker.yaml");
   const Model& m = session.model;
-  Scene scene(session);
+  MujocoScene scene(session);
   const HandServo hand = hand_servo(session);
   const Eigen::Isometry3d in_object = m.object_start.inverse() * m.actee_start;
   ContactQuery query;
