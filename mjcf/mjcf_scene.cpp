@@ -158,9 +158,10 @@ HandServo hand_servo(const CompiledSession& session) {
 }
 
 ActeeContact actee_contact(const Model& m) {
-  // MuJoCo's direct solref (-k, -b) sets the reference acceleration
-  // -b v - k d r of a contact (d its impedance); at rest the contact then
-  // penetrates r = (1 - d) A f / k for a force f, A being the contact's
+  // MuJoCo's direct solref (-k, -b) is a stiffness and a damping of the
+  // contact's reference acceleration (mj_makeImpedance), not of its force:
+  // with a constant impedance d, at rest the contact penetrates
+  // r = (1 - d) A f / k for a force f, A being the contact's
   // inverse effective mass (MuJoCo's diagApprox: the actee's 1 / mass
   // against the fixed jaw, a little more against the moving one). So a
   // contact of stiffness K_c (N/m) needs k = K_c (1 - d) / mass. The
