@@ -48,6 +48,18 @@ TEST(Mjcf, HandServoOfTheNutcracker) {
   }
 }
 
+// sessions/push-without-grasp.yaml never holds the tool (its grips have no
+// index finger on the fixed arm, then an open hand of no grasp type): the
+// engine's hand never turns the lever, so the scene has no hand servo.
+TEST(Mjcf, NoHandServoWhenTheScriptNeverHoldsTheTool) {
+  const CompiledSession s = load_session(kSource + "/sessions/push-without-grasp.yaml");
+  EXPECT_FALSE(hand_servo(s).present);
+  const std::string xml = mjcf_scene(s);
+  EXPECT_EQ(xml.find("<actuator>"), std::string::npos);
+  EXPECT_EQ(xml.find("hand_schedule"), std::string::npos);
+  EXPECT_NE(xml.find("the script never holds the tool, so there is no hand servo"), std::string::npos);
+}
+
 // The walnut: 250 N/mm, 9 g; two contacts of 500 N/mm in series.
 TEST(Mjcf, ActeeContactOfTheWalnut) {
   const Model& m = nutcracker().model;
