@@ -27,6 +27,7 @@ void add_live(CLI::App& app, Run* run);
 void add_replay(CLI::App& app, Run* run);
 void add_schema(CLI::App& app, Run* run);
 void add_test(CLI::App& app, Run* run);
+void add_export(CLI::App& app, Run* run);
 void add_completion(CLI::App& app, Run* run);
 
 // Prints "afford: <message>" to stderr and returns the exit status 2.

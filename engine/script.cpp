@@ -388,6 +388,7 @@ Script compile_script(const ScriptSpec& spec, const Model& m) {
     } else {
       holding = false;
     }
+    current.grasps = holding;
     script.keyframes.push_back(current);
   }
   return script;

@@ -154,6 +154,7 @@ struct Keyframe {
   // interpolated) instead of cutting the chord, so that a long squeeze keeps
   // it on the arm's face.
   bool grip = false;
+  bool grasps = false;  // the grip holds the tool: a finger on the fixed arm, in a grasp posture
   Eigen::Isometry3d object_in_hand = Eigen::Isometry3d::Identity();  // the tool in the hand frame
   Eigen::Vector3d thumb_rest = Eigen::Vector3d::Zero();  // m, moving arm frame
   double thumb_angle = 0;                                // rad, about the pivot (+z)

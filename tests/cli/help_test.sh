@@ -9,7 +9,7 @@ afford=$1
 fail=0
 commands=$("$afford" --help | awk '/^Subcommands:/ { on = 1; next } on && /^  [a-z]/ { print $1 }')
 [ -n "$commands" ] || { echo "help_test: afford --help lists no commands" >&2; exit 1; }
-for c in check describe explore gap render guide rules run live replay test completion; do
+for c in check describe explore gap render guide rules run live replay test export completion; do
   echo "$commands" | grep -qx "$c" || { echo "help_test: afford --help does not list $c" >&2; fail=1; }
 done
 script=$("$afford" completion bash) || { echo "help_test: afford completion bash failed" >&2; exit 1; }

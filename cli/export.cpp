@@ -1,0 +1,49 @@
+// afford export --mjcf SESSION [--out FILE]: the session's tool, actee and
+// hand as a MuJoCo scene (mjcf/mjcf_scene.h), written to FILE (default
+// out/<session>.xml). The file's header comment says what a harness must
+// apply that MJCF cannot say.
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+#include "commands.h"
+#include "files.h"
+#include "mjcf_scene.h"
+#include "option_checks.h"
+#include "session.h"
+
+namespace afford::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ExportOptions {
+  std::string file, out;
+  bool mjcf = false;
+};
+
+int export_command(const ExportOptions& o) {
+  const CompiledSession session = load_session(o.file);  // DataError: file:line:col, exit 1
+  const fs::path out = o.out.empty() ? fs::path("out") / (session.name + ".xml") : fs::path(o.out);
+  if (out.has_parent_path()) {
+    std::error_code ec;
+    fs::create_directories(out.parent_path(), ec);
+    if (ec) throw std::runtime_error("cannot create " + out.parent_path().string() + ": " + ec.message());
+  }
+  write_file_checked(out.string(), mjcf_scene(session));  // WriteError names the file, exit 1
+  std::cout << "wrote " << out.string() << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_export(CLI::App& app, Run* run) {
+  CLI::App* cmd = app.add_subcommand("export", "a session as a MuJoCo scene (MJCF XML) for MuJoCo 2.2.2");
+  auto o = std::make_shared<ExportOptions>();
+  cmd->add_flag("--mjcf", o->mjcf, "write MJCF (the one format; required)")->required();
+  cmd->add_option("SESSION", o->file, "a session file (sessions/*.yaml)")->required()->type_name(kFile);
+  cmd->add_option("--out", o->out, "the scene file to write (default out/<session>.xml)")->type_name(kFile);
+  cmd->callback([run, o] { *run = [o] { return export_command(*o); }; });
+}
+
+}  // namespace afford::cli
