@@ -40,7 +40,7 @@ class PointObserver : public Observer {
   void on_frame(const Model&, const State& s, const RuleSet&, const RuleState& rs) override {
     r_->peak_effort = std::max(r_->peak_effort, s.effort_force);
     r_->peak_actee_force = std::max(r_->peak_actee_force, s.actee_force);
-    r_->broken = r_->broken || s.condition == ActeeCondition::broken;
+    if (r_->broke_at < 0 && s.condition == ActeeCondition::broken) r_->broke_at = s.t;
     for (const Event* ev = events_begin(rs); ev != events_end(rs); ++ev) {
       double& first = r_->first[static_cast<size_t>(ev->function)];
       if (ev->kind == EventKind::inferred && first < 0) first = ev->t;

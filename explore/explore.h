@@ -94,7 +94,7 @@ struct PointResult {
   std::vector<double> first;   // s, per function: when it was first inferred, -1 never
   double peak_effort = 0;      // N, the largest push of the hand at the thumb
   double peak_actee_force = 0; // N, the largest force on the actee
-  bool broken = false;         // the actee broke
+  double broke_at = -1;        // s, when the actee broke; -1 never
 };
 
 // Runs one point through the engine. `effort` overrides the grid's effort

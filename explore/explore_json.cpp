@@ -21,7 +21,7 @@ Json point_json(const GridInfo& g, const PointResult& p) {
   Json first = Json::object();
   for (size_t f = 0; f < g.functions.size(); ++f) first[g.functions[f]] = p.first[f] >= 0 ? Json(p.first[f]) : Json(nullptr);
   return {{"first_s", first}, {"peak_effort_N", p.peak_effort}, {"peak_actee_force_N", p.peak_actee_force},
-          {"broken", p.broken}};
+          {"broke_s", p.broke_at >= 0 ? Json(p.broke_at) : Json(nullptr)}};
 }
 
 // Reading back: each value checked for its type and range, so that a
@@ -89,7 +89,9 @@ struct Reader {
     }
     p.peak_effort = number(j, "peak_effort_N");
     p.peak_actee_force = number(j, "peak_actee_force_N");
-    p.broken = flag(j, "broken");
+    const Json& broke = at(j, "broke_s");
+    if (!broke.is_null() && !broke.is_number()) bad("'broke_s' is neither a number nor null");
+    p.broke_at = broke.is_null() ? -1.0 : broke.get<double>();
     return p;
   }
 };

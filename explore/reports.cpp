@@ -124,7 +124,7 @@ std::string outcome_name(const GridInfo& g, int outcome) {
 std::string points_csv(const GridInfo& g, const ExploreResult& r) {
   std::string csv = "actee,placement_m,thumb_m,grasp,effort_N,outcome";
   for (const std::string& f : g.functions) csv += "," + f + "_s";
-  csv += ",peak_effort_N,peak_actee_force_N,broken\n";
+  csv += ",peak_effort_N,peak_actee_force_N,broke_s\n";
   for (const SeriesResult& s : r.series) {
     const GridActee& a = g.actees[static_cast<size_t>(s.key.actee)];
     const std::string key = a.name + "," + exact(a.placements[static_cast<size_t>(s.key.placement)]) + "," +
@@ -133,7 +133,8 @@ std::string points_csv(const GridInfo& g, const ExploreResult& r) {
     for (size_t i = 0; i < s.points.size(); ++i) {
       const PointResult& p = s.points[i];
       csv += key + "," + exact(g.efforts[i]) + "," + outcome_name(g, outcome(p)) + first_times(p) + "," +
-             exact(p.peak_effort) + "," + exact(p.peak_actee_force) + "," + (p.broken ? "1" : "0") + "\n";
+             exact(p.peak_effort) + "," + exact(p.peak_actee_force) + "," +
+             (p.broke_at >= 0 ? exact(p.broke_at) : std::string()) + "\n";
     }
   }
   return csv;

@@ -4,7 +4,7 @@
 //
 //   points.csv      one row per point: actee, placement, thumb, grasp,
 //                   effort, outcome, when each function was first inferred,
-//                   the peaks, whether the actee broke
+//                   the peaks, when the actee broke
 //   thresholds.csv  one row per turn of the outcome along the effort
 //   summary.txt     per actee in words
 //   explore.json    all of it (and what `afford explore --merge` reads)

@@ -1,0 +1,167 @@
+// The same grid in afford and in MuJoCo, to check the physics (issue 11,
+// item 5): every point of a grid of the nutcracker (explore.h) run through
+// the engine and, exported with afford export's scene (mjcf/), through
+// MuJoCo 2.2.2 with the harness (mujoco_harness.h). Prints the agreement of
+// the crash / no-crash verdicts, the difference of the crack times, and
+// every point where the two disagree with what explains it.
+//
+//   afford_crosscheck SOURCE_DIR [THREADS]   (cmake --build build --target crosscheck)
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "explore.h"
+#include "mujoco_harness.h"
+#include "parallel.h"
+#include "results.h"
+
+namespace afford {
+namespace {
+
+struct Outcome {
+  double afford_break = -1, mujoco_break = -1;  // s, -1: it did not break
+  double afford_load = 0, mujoco_load = 0;      // N, the actee's largest load before it broke
+};
+
+// A grid point as a session MuJoCo's scene is exported from: the point's
+// model and script (named uniquely: the harness's file is named after it).
+CompiledSession point_session(const Explorer& e, const GridPoint& p, size_t index) {
+  CompiledSession s;
+  s.name = "crosscheck-" + std::to_string(index);
+  s.file = s.name;
+  s.description = "a point of afford_crosscheck's grid";
+  s.model = *e.models[static_cast<size_t>(p.actee)][static_cast<size_t>(p.placement)];
+  s.rules = e.rules;
+  PointDrive drive;
+  drive.thumb = e.grid.thumbs[static_cast<size_t>(p.thumb)];
+  drive.grasp = e.grasp_types[static_cast<size_t>(p.grasp)];
+  drive.effort = e.grid.efforts[static_cast<size_t>(p.effort)];
+  s.script = point_script(s.model, e.jaws[static_cast<size_t>(p.actee)][static_cast<size_t>(p.placement)], drive,
+                          e.timing);
+  return s;
+}
+
+int crosscheck(const std::string& source, int threads) {
+  ExploreFiles f;
+  f.object = source + "/objects/nutcracker.yaml";
+  f.agent = source + "/agents/hand.yaml";
+  f.rules = source + "/rules/functions.yaml";
+  f.grasps = source + "/rules/grasps.yaml";
+  for (const char* a : {"walnut", "hazelnut", "peanut"}) f.actees.push_back(source + "/actees/" + a + ".yaml");
+  GridOptions grid;
+  grid.placements = 2;
+  grid.thumbs = 2;
+  grid.efforts = 6;
+  grid.grasps = {"medium_wrap"};
+  const Explorer e = make_explorer(f, grid);
+  // afford's own thresholds, to say how close a point that disagrees is to one.
+  const ExploreResult thresholds = explore(e, Shard{}, threads);
+
+  std::vector<GridPoint> points;
+  for (const GridPoint& s : grid_series(e.grid)) {
+    for (size_t k = 0; k < e.grid.efforts.size(); ++k) {
+      GridPoint p = s;
+      p.effort = static_cast<int>(k);
+      points.push_back(p);
+    }
+  }
+  std::vector<Outcome> out(points.size());
+  std::mutex loading;  // MuJoCo's XML loader is not documented as thread-safe
+  parallel_for(points.size(), threads, [&](size_t i) {
+    const CompiledSession session = point_session(e, points[i], i);
+    const PointResult a = run_point(e, points[i]);
+    out[i].afford_break = a.broke_at;
+    out[i].afford_load = a.peak_actee_force;
+    std::unique_lock<std::mutex> lock(loading);
+    MujocoScene scene(session);
+    lock.unlock();
+    const int frames = static_cast<int>(std::floor(scene.duration() / session.model.timestep + 1e-9));
+    for (int k = 1; k <= frames; ++k) {
+      const double load = scene.actee_load();
+      if (scene.frame()) {
+        out[i].mujoco_break = scene.data()->time;
+        break;
+      }
+      out[i].mujoco_load = std::max(out[i].mujoco_load, std::max(load, scene.actee_load()));
+    }
+  });
+
+  // afford's cracking threshold of a point's series, N (-1: none).
+  auto threshold_of = [&](const GridPoint& p) {
+    for (const SeriesResult& s : thresholds.series) {
+      if (s.key.actee != p.actee || s.key.placement != p.placement || s.key.thumb != p.thumb) continue;
+      for (const Threshold& t : s.thresholds) {
+        if (t.at.broke_at >= 0) return t.effort;
+      }
+    }
+    return -1.0;
+  };
+  auto where = [&](const GridPoint& p) {
+    const GridActee& actee = e.grid.actees[static_cast<size_t>(p.actee)];
+    const double effort = e.grid.efforts[static_cast<size_t>(p.effort)];
+    const double threshold = threshold_of(p);
+    char text[200];
+    std::snprintf(text, sizeof text, "%s at %.0f mm, thumb %.0f mm, %.0f N (%+.1f %% from afford's threshold %.1f N)",
+                  actee.name.c_str(), 1e3 * actee.placements[static_cast<size_t>(p.placement)],
+                  1e3 * e.grid.thumbs[static_cast<size_t>(p.thumb)], effort,
+                  threshold > 0 ? 100 * (effort / threshold - 1) : 0.0, threshold);
+    return std::string(text);
+  };
+
+  int agree = 0, both = 0;
+  std::vector<double> dt_ms;
+  std::printf("afford_crosscheck: %zu points of the nutcracker (walnut, hazelnut, peanut; 2 placements, 2 thumbs,\n"
+              "medium_wrap, %zu efforts from 0 to %.0f N), afford and MuJoCo 2.2.2\n\n",
+              points.size(), e.grid.efforts.size(), e.grid.efforts.back());
+  std::printf("disagreements:\n");
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Outcome& o = out[i];
+    const bool a = o.afford_break >= 0, m = o.mujoco_break >= 0;
+    if (a && m) {
+      ++both;
+      dt_ms.push_back(1e3 * (o.mujoco_break - o.afford_break));
+    }
+    if (a == m) {
+      ++agree;
+      continue;
+    }
+    std::printf("  %s: afford %s, MuJoCo %s; the largest load before a break: afford %.1f N, MuJoCo %.1f N (%+.1f %%)\n",
+                where(points[i]).c_str(), a ? "cracks" : "does not crack", m ? "cracks" : "does not crack",
+                o.afford_load, o.mujoco_load, o.afford_load > 0 ? 100 * (o.mujoco_load / o.afford_load - 1) : 0.0);
+  }
+  if (agree == static_cast<int>(points.size())) std::printf("  none\n");
+  std::printf("cracks more than 20 ms apart:\n");
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Outcome& o = out[i];
+    if (o.afford_break < 0 || o.mujoco_break < 0 || std::abs(o.mujoco_break - o.afford_break) <= 0.020) continue;
+    std::printf("  %s: afford %.3f s, MuJoCo %.3f s\n", where(points[i]).c_str(), o.afford_break, o.mujoco_break);
+  }
+  std::sort(dt_ms.begin(), dt_ms.end());
+  const double median = dt_ms.empty() ? 0 : dt_ms[dt_ms.size() / 2];
+  double worst = 0;
+  for (double d : dt_ms) worst = std::max(worst, std::abs(d));
+  std::printf("\nverdicts agree: %d of %zu (%.1f %%; goal 99 %%)\n", agree, points.size(),
+              100.0 * agree / static_cast<double>(points.size()));
+  std::printf("crack time, MuJoCo - afford, where both crack (%d points): median %+.1f ms, largest |%.1f| ms (goal 20 ms)\n",
+              both, median, worst);
+  return 0;
+}
+
+}  // namespace
+}  // namespace afford
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: afford_crosscheck SOURCE_DIR [THREADS]\n");
+    return 2;
+  }
+  try {
+    return afford::crosscheck(argv[1], argc > 2 ? std::max(1, std::atoi(argv[2])) : afford::default_threads());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "afford_crosscheck: %s\n", e.what());
+    return 1;
+  }
+}
