@@ -129,7 +129,10 @@ std::string explore_json(const GridInfo& g, const ExploreResult& r) {
 }
 
 void read_explore_json(const std::string& path, GridInfo* g, ExploreResult* r) {
-  const std::string text = read_regular_file(path, kMaxExploreJsonBytes);
+  parse_explore_json(read_regular_file(path, kMaxExploreJsonBytes), path, g, r);
+}
+
+void parse_explore_json(const std::string& text, const std::string& path, GridInfo* g, ExploreResult* r) {
   Json j;
   try {
     j = Json::parse(text);

@@ -16,5 +16,7 @@ std::string explore_json(const GridInfo& g, const ExploreResult& r);
 // file and, for bad JSON, the line and column; for a file of another shape
 // or with indices outside its grid, what is wrong.
 void read_explore_json(const std::string& path, GridInfo* g, ExploreResult* r);
+// The same from the file's text; `name` stands for the file in errors.
+void parse_explore_json(const std::string& text, const std::string& name, GridInfo* g, ExploreResult* r);
 
 }  // namespace afford
