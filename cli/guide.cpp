@@ -1,8 +1,11 @@
-// afford guide OBJECT [--actees DIR] [--guides FILE] [--json]: the guides of
-// the paper (Sec. 4.4) for an object, computed as rules/guides.yaml says:
-// as text, or as one JSON object (SI units, the object frame) holding the
-// facts and the geometry a renderer draws. The actees and the guides are
-// the shipped ones (data_dir.h) unless --actees or --guides names others.
+// afford guide OBJECT [--actees DIR] [--guides FILE] [--explored DIR] [--json]:
+// the guides of the paper (Sec. 4.4) for an object, computed as
+// rules/guides.yaml says: as text, or as one JSON object (SI units, the
+// object frame) holding the facts and the geometry a renderer draws. The
+// actees and the guides are the shipped ones (data_dir.h) unless --actees
+// or --guides names others. Where afford explore has run on the object
+// (--explored DIR, or out/explore-OBJECT), the efforts at which its outcomes
+// turn make "amplify or decline" concrete.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +13,8 @@
 
 #include "commands.h"
 #include "data_dir.h"
+#include "explore_json.h"
+#include "reports.h"
 #include "option_checks.h"
 #include "guides.h"
 #include "json_output.h"
@@ -165,7 +170,7 @@ Json list(const std::vector<T>& items, F item) {
   return j;
 }
 
-void print_json(const Guides& g) {
+void print_json(const Guides& g, const Json& thresholds) {
   const GuideFacts& f = g.facts;
   const Eigen::Matrix3d r = f.functional_pose.linear();
   Json facts = {
@@ -222,13 +227,28 @@ void print_json(const Guides& g) {
     e.update(Json{{"text", x.text}, {"anchor", vec(x.anchor)}, {"colour", colour(x.colour)}});
     return e;
   });
+  if (!thresholds.is_null()) j["thresholds"] = thresholds;  // where afford explore ran on the object
   std::cout << j.dump() << "\n";
 }
 
 struct GuideOptions {
-  std::string file, actee_dir, guides_file;
+  std::string file, actee_dir, guides_file, explored;
   bool json = false;
 };
+
+// The thresholds of a grid run on this object (afford explore), if there is
+// one: --explored DIR, else out/explore-OBJECT where present. A grid of
+// another object is an error, not silently shown.
+bool load_explored(const GuideOptions& o, const std::string& object, GridInfo* g, ExploreResult* r,
+                   std::string* file) {
+  const std::string dir = o.explored.empty() ? "out/explore-" + object : o.explored;
+  *file = (std::filesystem::path(dir) / "explore.json").string();
+  if (o.explored.empty() && !std::filesystem::exists(*file)) return false;
+  read_explore_json(*file, g, r);
+  if (g->object != object) throw std::runtime_error(*file + ": a grid of the " + g->object + ", not of the " + object);
+  if (!r->shard.whole()) throw std::runtime_error(*file + ": one shard of a grid; join them with afford explore --merge");
+  return true;
+}
 
 int guide(GuideOptions o) {
   const std::string& file = o.file;
@@ -250,10 +270,25 @@ int guide(GuideOptions o) {
   const std::vector<ActeeFit> fits = fit_actees(object, load_actee_folder(actee_dir));
   const Model model = compile(object, nullptr, nullptr, ModelOptions{});
   const Guides guides = compute_guides(model, specs, fits);
+  GridInfo grid;
+  ExploreResult explored;
+  std::string explored_file;
+  const bool has_grid = load_explored(o, model.object_name, &grid, &explored, &explored_file);
+  const std::vector<TurnSpan> turns = has_grid ? turn_spans(grid, explored) : std::vector<TurnSpan>{};
   if (json) {
-    print_json(guides);
+    Json thresholds = Json::array();
+    for (const TurnSpan& t : turns) {
+      thresholds.push_back({{"actee", t.actee}, {"from", t.from}, {"to", t.to}, {"low_N", json_number(t.low)},
+                            {"high_N", json_number(t.high)}, {"text", turn_span_text(grid, t)}});
+    }
+    print_json(guides, has_grid ? Json{{"file", explored_file}, {"turns", thresholds}} : Json(nullptr));
   } else {
     print_text(guides, guides_file, actee_dir);
+    if (has_grid) {
+      std::cout << "amplify or decline, as simulated by afford explore (" << explored_file << "):\n";
+      if (turns.empty()) std::cout << "  no effort of the grid changed how a point ends\n";
+      for (const TurnSpan& t : turns) std::cout << "  " << turn_span_text(grid, t) << "\n";
+    }
   }
   return 0;
 }
@@ -269,6 +304,9 @@ void add_guide(CLI::App& app, Run* run) {
       ->type_name(kDir);
   cmd->add_option("--guides", o->guides_file, "the guides file (default: the shipped rules/guides.yaml)")
       ->type_name(kFile);
+  cmd->add_option("--explored", o->explored,
+                  "the output of afford explore on this object, for its thresholds (default: out/explore-OBJECT where present)")
+      ->type_name(kDir);
   cmd->add_flag("--json", o->json, "print the guides as JSON");
   cmd->callback([run, o] { *run = [o] { return guide(*o); }; });
 }

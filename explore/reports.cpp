@@ -117,6 +117,40 @@ void summarise_actee(const GridInfo& g, const ExploreResult& r, int actee, std::
 
 }  // namespace
 
+std::vector<TurnSpan> turn_spans(const GridInfo& g, const ExploreResult& r) {
+  std::vector<TurnSpan> spans;
+  for (const SeriesResult& s : r.series) {
+    for (const Threshold& t : s.thresholds) {
+      const std::string actee = g.actees[static_cast<size_t>(s.key.actee)].name;
+      const std::string from = outcome_name(g, t.from), to = outcome_name(g, t.to);
+      auto same = [&](const TurnSpan& x) { return x.actee == actee && x.from == from && x.to == to; };
+      auto it = std::find_if(spans.begin(), spans.end(), same);
+      if (it == spans.end()) {
+        spans.push_back({actee, from, to, t.effort, t.effort, &s, &s});
+        continue;
+      }
+      if (t.effort < it->low) {
+        it->low = t.effort;
+        it->at_low = &s;
+      }
+      if (t.effort > it->high) {
+        it->high = t.effort;
+        it->at_high = &s;
+      }
+    }
+  }
+  return spans;
+}
+
+std::string turn_span_text(const GridInfo& g, const TurnSpan& t) {
+  auto at = [&](const SeriesResult& s) {
+    return where(g, s.key) + ", mechanical advantage " + format_quantity(s.mechanical_advantage, dim::none);
+  };
+  std::string text = t.actee + ": " + t.from + " turns to " + t.to + " from " + q(t.low, dim::force) + " (" + at(*t.at_low) + ")";
+  if (t.at_high != t.at_low) text += " to " + q(t.high, dim::force) + " (" + at(*t.at_high) + ")";
+  return text;
+}
+
 std::string outcome_name(const GridInfo& g, int outcome) {
   return outcome < 0 ? std::string("none") : g.functions[static_cast<size_t>(outcome)];
 }

@@ -29,6 +29,19 @@ std::string thresholds_csv(const GridInfo& g, const ExploreResult& r);
 // the lever that explains it; the grasps that never reach it.
 std::string summary_text(const GridInfo& g, const ExploreResult& r);
 
+// The guides' "amplify or decline" made concrete (paper Sec. 4.4): per
+// actee and turn of the outcome (carry -> crash), the least and the most
+// effort at which it happens over the grid, each with where and the
+// mechanical advantage; `afford guide` prints them where a grid was run.
+struct TurnSpan {
+  std::string actee, from, to;  // outcome names
+  double low = 0, high = 0;     // N
+  const SeriesResult* at_low = nullptr;
+  const SeriesResult* at_high = nullptr;
+};
+std::vector<TurnSpan> turn_spans(const GridInfo& g, const ExploreResult& r);
+std::string turn_span_text(const GridInfo& g, const TurnSpan& t);
+
 // Writes every file above into dir (made if missing); returns their paths.
 // A failed write throws WriteError (engine/files.h) naming the path.
 std::vector<std::string> write_explore(const std::string& dir, const GridInfo& g, const ExploreResult& r);
