@@ -37,14 +37,7 @@ const Explorer& nutcracker_grid() {
 void BM_ExploreGrid(benchmark::State& bench) {
   const Explorer& e = nutcracker_grid();
   const int threads = static_cast<int>(bench.range(0));
-  std::vector<GridPoint> points;
-  for (const GridPoint& s : grid_series(e.grid)) {
-    for (size_t f = 0; f < e.grid.efforts.size(); ++f) {
-      GridPoint p = s;
-      p.effort = static_cast<int>(f);
-      points.push_back(p);
-    }
-  }
+  const std::vector<GridPoint> points = grid_points(e.grid);
   const double frames_per_point = std::floor(point_duration(e.timing) / e.models[0][0]->timestep + 1e-9);
   std::vector<PointResult> results(points.size());
   for (auto _ : bench) {

@@ -60,14 +60,7 @@ int crosscheck(const std::string& source, int threads) {
   // afford's own thresholds, to say how close a point that disagrees is to one.
   const ExploreResult thresholds = explore(e, Shard{}, threads);
 
-  std::vector<GridPoint> points;
-  for (const GridPoint& s : grid_series(e.grid)) {
-    for (size_t k = 0; k < e.grid.efforts.size(); ++k) {
-      GridPoint p = s;
-      p.effort = static_cast<int>(k);
-      points.push_back(p);
-    }
-  }
+  const std::vector<GridPoint> points = grid_points(e.grid);
   std::vector<Outcome> out(points.size());
   std::mutex loading;  // MuJoCo's XML loader is not documented as thread-safe
   parallel_for(points.size(), threads, [&](size_t i) {

@@ -62,6 +62,17 @@ std::vector<GridPoint> grid_series(const GridInfo& g) {
   return series;
 }
 
+std::vector<GridPoint> grid_points(const GridInfo& g) {
+  std::vector<GridPoint> points;
+  for (const GridPoint& s : grid_series(g)) {
+    for (size_t k = 0; k < g.efforts.size(); ++k) {
+      points.push_back(s);
+      points.back().effort = static_cast<int>(k);
+    }
+  }
+  return points;
+}
+
 ExploreResult explore(const Explorer& e, Shard shard, int threads,
                       const std::function<void(std::size_t, std::size_t)>& progress) {
   const GridInfo& g = e.grid;

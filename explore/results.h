@@ -46,6 +46,8 @@ struct ExploreResult {
 
 // The series of a grid, in order (actee, placement, thumb, grasp).
 std::vector<GridPoint> grid_series(const GridInfo& g);
+// Every point of a grid: each series at each effort, in that order.
+std::vector<GridPoint> grid_points(const GridInfo& g);
 
 // Runs the grid's series of `shard` on `threads` threads: every effort of
 // each series, then the thresholds between them. `progress(done, total)`
