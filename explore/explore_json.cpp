@@ -143,6 +143,10 @@ void parse_explore_json(const std::string& text, const std::string& path, GridIn
     const size_t start = text.rfind('\n', at == 0 ? 0 : at - 1);
     const size_t column = at - (start == std::string::npos ? 0 : start + 1) + 1;
     throw std::runtime_error(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": not JSON");
+  } catch (const Json::exception& e) {
+    // A number too large for a double (found by fuzz_explore_json): nlohmann
+    // names the number, not where it is.
+    throw std::runtime_error(path + ": not JSON: " + e.what());
   }
   const Reader in{path};
   *g = GridInfo{};
@@ -159,6 +163,8 @@ void parse_explore_json(const std::string& text, const std::string& path, GridIn
     g->grasps.push_back(in.text(k, "name"));
     g->grasp_limit.push_back(in.number(k, "limit_N"));
   }
+  // Every axis has a value: the reports index the first and the last.
+  if (g->thumbs.empty() || g->efforts.empty() || g->grasps.empty()) in.bad("a grid without thumbs, efforts or grasps");
   for (const Json& a : in.array(j, "actees")) {
     GridActee actee;
     actee.name = in.text(a, "name");
@@ -168,6 +174,7 @@ void parse_explore_json(const std::string& text, const std::string& path, GridIn
     actee.limit = in.number(a, "limit_N");
     actee.breaks = in.flag(a, "breaks");
     actee.placements = in.numbers(a, "placements_m");
+    if (actee.fits == actee.placements.empty()) in.bad("an actee that fits without placements, or one that does not with some");
     g->actees.push_back(std::move(actee));
   }
   if (j.contains("shard")) {

@@ -163,7 +163,15 @@ TEST(Explore, ADamagedShardFileIsAnErrorWithItsPlace) {
   write_file_checked(file.string(),
                      "{\"object\": \"t\", \"functions\": [], \"tolerance_N\": 0.5, \"thumbs_m\": [0.1], \"efforts_N\": [1],"
                      " \"grasps\": [], \"actees\": [], \"series\": [{\"index\": 0, \"actee\": 3}]}\n");
+  EXPECT_THROW_MSG(read_explore_json(file.string(), &g, &r), "a grid without thumbs, efforts or grasps");
+  write_file_checked(file.string(),
+                     "{\"object\": \"t\", \"functions\": [], \"tolerance_N\": 0.5, \"thumbs_m\": [0.1], \"efforts_N\": [1],"
+                     " \"grasps\": [{\"name\": \"g\", \"limit_N\": 1}], \"actees\": [],"
+                     " \"series\": [{\"index\": 0, \"actee\": 3}]}\n");
   EXPECT_THROW_MSG(read_explore_json(file.string(), &g, &r), "'actee' is not an index below 0");
+  // A number beyond a double (found by fuzz_explore_json): an error, not a crash.
+  write_file_checked(file.string(), "{\"object\": \"t\", \"tolerance_N\": 41e30800}\n");
+  EXPECT_THROW_MSG(read_explore_json(file.string(), &g, &r), "afford_explore_bad.json: not JSON: ");
   std::filesystem::remove(file);
 }
 
