@@ -109,6 +109,8 @@ Explorer make_explorer(const ExploreFiles& files, const GridOptions& grid) {
     g.grasp_limit.push_back(std::min(bare.max_force, bare.grasp_max_force[static_cast<size_t>(type)]));
   }
 
+  if (g.grasps.empty()) throw GridError("the hand can form no grasp type of " + files.grasps);
+
   for (const std::string& file : files.actees) {
     const ActeeSpec a = load_actee(file);
     GridActee entry;
