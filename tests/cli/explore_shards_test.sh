@@ -11,7 +11,7 @@ grid="objects/nutcracker.yaml --actees actees/walnut.yaml actees/peanut.yaml act
 # shellcheck disable=SC2086
 "$afford" explore $grid --threads 2 --out "$work/whole" >/dev/null || { echo "explore_shards: the whole run failed" >&2; exit 1; }
 # shellcheck disable=SC2086
-parallel --halt now,fail=1 "$afford" explore $grid --threads 1 --shard {}/3 --out "$work/shard{}" ::: 1 2 3 >/dev/null ||
+parallel --will-cite --halt now,fail=1 "$afford" explore $grid --threads 1 --shard {}/3 --out "$work/shard{}" ::: 1 2 3 >/dev/null ||
   { echo "explore_shards: a shard failed" >&2; exit 1; }
 "$afford" explore --merge "$work/shard1" "$work/shard2" "$work/shard3" --out "$work/merged" >/dev/null ||
   { echo "explore_shards: the merge failed" >&2; exit 1; }
