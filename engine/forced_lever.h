@@ -16,6 +16,7 @@ struct ForcedLever {
   double contact_angle = 0;    // rad, where the jaws touch it
   double thickness = 0;        // m, its extent across the jaws
   Eigen::Matrix3d object_rotation = Eigen::Matrix3d::Identity();  // the tool in the world, for gravity
+  double turn = 0;             // rad, the tool turned further about its hinge (gravity_coefficients)
 };
 
 struct ForcedStep {

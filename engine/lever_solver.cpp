@@ -230,7 +230,7 @@ ForcedStep step_forced_lever(const Model& m, const ForcedLever& lever, double th
   eq.theta_c = lever.contact_angle;
   eq.thickness = lever.thickness;
   eq.dt = dt;
-  gravity_coefficients(m, lever.object_rotation, &eq.g_cos, &eq.g_sin);
+  gravity_coefficients(m, lever.object_rotation, &eq.g_cos, &eq.g_sin, lever.turn);
   double lo = 0, friction = 0;
   ForcedStep out;
   out.theta = settle(eq, &lo, &friction);

@@ -63,18 +63,21 @@ double actee_law(double stiffness, double exponent, double reference, double def
   return base * factor;
 }
 
-void gravity_coefficients(const Model& m, const Eigen::Matrix3d& object_rotation, double* c, double* s) {
+void gravity_coefficients(const Model& m, const Eigen::Matrix3d& object_rotation, double* c, double* s, double turn) {
   *c = *s = 0;
   if (!m.gravity) return;
   // Weight in the object frame; the arm's centre turned by theta about z:
   // torque_z = (R(theta) x) x w, which is linear in cos and sin.
-  const Eigen::Vector3d w = object_rotation.transpose() * Eigen::Vector3d(0, 0, -kStandardGravity * m.arm_mass);
+  const Eigen::Matrix3d turned = object_rotation * Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Vector3d w = turned.transpose() * Eigen::Vector3d(0, 0, -kStandardGravity * m.arm_mass);
   const double x = m.arm_centre.x(), y = m.arm_centre.y();
   *c = x * w.y() - y * w.x();
   *s = -(x * w.x() + y * w.y());
   // The extra amplitude closes the arm as extra weight would on a tool
   // whose fixed arm lies level with the moving arm above it.
-  *c -= m.gravity_extra;
+  // Turned by `turn`, it follows -cos(theta + turn).
+  *c -= m.gravity_extra * std::cos(turn);
+  *s += m.gravity_extra * std::sin(turn);
 }
 
 }  // namespace afford

@@ -45,6 +45,10 @@ double actee_law(double stiffness, double exponent, double reference, double def
 // Gravity's torque on the moving arm is c * cos(theta) + s * sin(theta)
 // for an object turned by `object_rotation` in the world (z up); fills c and
 // s (N*m), gravity's extra amplitude included. Zero when gravity is off.
-void gravity_coefficients(const Model& m, const Eigen::Matrix3d& object_rotation, double* c, double* s);
+// `turn` (rad) turns the tool further about its hinge (a measurement made
+// with the tool upside down, or on its side): the computed weight and the
+// extra amplitude turn with it.
+void gravity_coefficients(const Model& m, const Eigen::Matrix3d& object_rotation, double* c, double* s,
+                          double turn = 0);
 
 }  // namespace afford

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <random>
 
 namespace afford {
 namespace {
@@ -24,6 +25,7 @@ std::vector<Replay> halves(const Replay& r) {
   auto slice = [&](Replay& h, size_t from, size_t to) {
     auto cut = [&](const auto& v) { return std::decay_t<decltype(v)>(v.begin() + static_cast<long>(from), v.begin() + static_cast<long>(to)); };
     h.file = r.file + (from == 0 ? " (first half)" : " (second half)");
+    h.turned = r.turned;
     h.rig = r.rig;
     h.to_newtons = r.to_newtons;
     h.t = cut(r.t);
@@ -61,6 +63,55 @@ double noise_of(const std::vector<Replay>& replays) {
   auto mid = d2.begin() + static_cast<long>(d2.size() / 2);
   std::nth_element(d2.begin(), mid, d2.end());
   return 1.4826 * *mid / std::sqrt(6.0);
+}
+
+// The deviation of the angle's (or displacement's) own noise, as noise_of
+// finds the effort's.
+double input_noise_of(const std::vector<Replay>& replays) {
+  std::vector<double> d2;
+  for (const Replay& r : replays) {
+    for (size_t i = 0; i + 2 < r.t.size(); ++i) {
+      if (r.fitted[i] && r.fitted[i + 1] && r.fitted[i + 2]) d2.push_back(std::abs(r.x[i] - 2 * r.x[i + 1] + r.x[i + 2]));
+    }
+  }
+  if (d2.empty()) return 0.0;
+  auto mid = d2.begin() + static_cast<long>(d2.size() / 2);
+  std::nth_element(d2.begin(), mid, d2.end());
+  return 1.4826 * *mid / std::sqrt(6.0);
+}
+
+// The measurement replayed with as much noise again added to its angles
+// (or displacements), from a fixed seed: the same measurement as the
+// model sees it through a second, independent sensor of the motion.
+std::vector<Replay> replay_with_input_noise(const Model& model, Measurement m, double deviation, bool split) {
+  std::mt19937 random(20261123);
+  std::normal_distribution<double> noise(0.0, deviation);
+  const Signal x = m.rig == Rig::lever ? Signal::angle : Signal::displacement;
+  for (Trace& trace : m.traces) {
+    for (double& v : trace[x]) v += noise(random);
+  }
+  std::vector<Replay> replays = m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m);
+  return split ? halves(replays.front()) : replays;
+}
+
+// How much of the motion's noise a fitted set passes into its prediction
+// (N, RMS): the model predicts from the measured angle, its rate and its
+// acceleration, and differentiating twice makes an arm's inertia pass the
+// angle's noise on many times over. The two predictions, from the motion
+// as measured and with as much noise again, differ by the noise's share.
+double propagated_noise(const Fitter& measured, const Fitter& noisier, const std::vector<Replay>& a,
+                        const std::vector<Replay>& b, const SetFit& set) {
+  double sq = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const std::vector<double> ea = measured.residual(set, i), eb = noisier.residual(set, i);
+    for (size_t s = 0; s < ea.size(); ++s) {
+      if (!a[i].fitted[s] || !b[i].fitted[s]) continue;
+      sq += (ea[s] - eb[s]) * (ea[s] - eb[s]);
+      ++n;
+    }
+  }
+  return n > 0 ? std::sqrt(sq / static_cast<double>(n)) : 0.0;
 }
 
 // 99 % point of chi-square with k degrees of freedom (Wilson-Hilferty).
@@ -243,10 +294,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   d.measurement = m.name;
   const Model model = m.rig == Rig::lever ? compile_measurement(m) : compile_actee_only(*m.actee, m.options);
   std::vector<Replay> replays = m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m);
+  const bool split = replays.size() == 1;
   // Cross-validation: each fold's traces are judged by a fit on the others
   // (a single trace is cut in halves, each judged by the other); the
   // parameters reported come from a fit on every trace.
-  if (replays.size() == 1) replays = halves(replays.front());
+  if (split) replays = halves(replays.front());
   const size_t folds = std::min<size_t>(replays.size(), kFolds);
   std::vector<size_t> all(replays.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = i;
@@ -261,6 +313,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   d.folds = folds;
   d.noise = noise_of(replays);
   const Fitter fitter(model, replays, all, {});
+  const std::vector<Replay> noisier = replay_with_input_noise(model, m, input_noise_of(replays), split);
+  const Fitter noisier_fitter(model, noisier, all, {});
+  // What the model cannot match better than: the effort's noise and the
+  // motion's, passed through the set's prediction.
+  auto floor_of = [&](const SetFit& f) {
+    return std::hypot(d.noise, propagated_noise(fitter, noisier_fitter, replays, noisier, f));
+  };
   std::vector<EffectKind> library = options.library.empty() ? fitter.candidates() : options.library;
   const std::vector<EffectKind> applicable = fitter.candidates();
   std::erase_if(library, [&](EffectKind k) { return std::find(applicable.begin(), applicable.end(), k) == applicable.end(); });
@@ -294,7 +353,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
 
   const SetFit nominal = score({}).fit;
   d.rmse_before = nominal.rmse_test;
-  auto matched = [&](const SetFit& f) { return f.rmse_test <= kMatched * d.noise; };
+  auto matched = [&](const SetFit& f) { return f.rmse_test <= kMatched * floor_of(f); };
   SetFit current = nominal;
   std::vector<EffectKind> chosen;
   bool ambiguous = false;
@@ -343,6 +402,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     }
   }
   d.effects = current.effects;
+  d.noise_through_model = floor_of(current);
   d.rmse_after = current.rmse_test;
   d.shrink = d.rmse_before > 0 ? 1 - d.rmse_after / d.rmse_before : 0.0;
 

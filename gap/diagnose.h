@@ -61,6 +61,7 @@ struct Diagnosis {
   std::vector<EffectFit> effects;                  // the effects adopted
   std::vector<std::vector<EffectKind>> ambiguous;  // sets that fit as well, when ambiguous
   double noise = 0;                                // N, the measurement's own noise, estimated
+  double noise_through_model = 0;                  // N, with the motion's noise through the adopted model
   double rmse_before = 0, rmse_after = 0;          // N, on the held-out traces
   double shrink = 0;                               // 1 - after / before, held out
   std::vector<PhaseShare> phases;

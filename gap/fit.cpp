@@ -103,7 +103,7 @@ Fitter::Fitter(const Model& model, const std::vector<Replay>& replays, std::vect
         col(EffectKind::spring_preload)[i] = ds;
         col(EffectKind::progressive_spring)[i] = d * d * d * ds;
         col(EffectKind::arm_inertia)[i] = -alpha;
-        col(EffectKind::gravity)[i] = -std::cos(theta);
+        col(EffectKind::gravity)[i] = -std::cos(theta + r.turned);  // as gravity_coefficients turns the extra
       }
       // Switching gravity on brings the arm's computed weight too.
       if (!model.gravity) {
@@ -111,7 +111,7 @@ Fitter::Fitter(const Model& model, const std::vector<Replay>& replays, std::vect
         on.gravity = true;
         on.gravity_extra = 0;
         double c = 0, sn = 0;
-        gravity_coefficients(on, model.object_start.linear(), &c, &sn);
+        gravity_coefficients(on, model.object_start.linear(), &c, &sn, r.turned);
         weight.resize(n);
         for (size_t i = 0; i < n; ++i) weight[i] = c * std::cos(r.x[i]) + sn * std::sin(r.x[i]);
       }

@@ -77,6 +77,7 @@ std::vector<ForceGap> replay_force(const Model& model, const Measurement& m) {
     EventGap contact{"contact"}, broke{"break"};
     if (lever.actee) measured_events(trace, model.actee_limit, lever.contact_angle, &contact, &broke);
     ForcedLever now = lever;
+    now.turn = trace.turned;
     double theta = angle.front(), omega = 0, sq = 0;
     size_t counted = 0;
     for (size_t i = 1; i < t.size(); ++i) {

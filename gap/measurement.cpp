@@ -1,6 +1,7 @@
 #include "measurement.h"
 
 #include <cmath>
+#include <numbers>
 
 #include "data_files.h"
 #include "load.h"
@@ -77,6 +78,18 @@ const MapSchema& plates_actee_schema() {
   return kActee;
 }
 
+// A trace named with how the tool was held: `{file: a.csv, turned: 180 deg}`.
+const MapSchema& trace_entry_schema() {
+  using namespace schema;
+  static const MapSchema kEntry{
+      "a trace file and how the tool was held while it was measured",
+      {required_key("file", path(), "the trace file"),
+       optional_key("turned", quantity(dim::angle),
+                    "the tool turned about its hinge from how its file holds it, -360 deg to 360 deg "
+                    "(180 deg: upside down), which turns its weight's torque")}};
+  return kEntry;
+}
+
 // `format: {skip, separator, columns: {signal: {column, unit}}}`.
 TableFormat read_format(const Node& node, Rig rig) {
   MapReader m(node, "the trace format", format_schema());
@@ -136,8 +149,10 @@ const MapSchema& measurement_schema() {
          optional_key("actee", any_of({mapping(actee_entry_schema()), mapping(plates_actee_schema())}),
                       "the actee, at a distance on the jaw (lever rig) or alone (plates)"),
          optional_key("effort_at", quantity(dim::length), "where the effort was applied, in the emphasis region"),
-         optional_key("trace", path(), "the trace file (or traces)"),
-         optional_key("traces", sequence(path(), 1, 1000), "the trace files (or trace)"),
+         optional_key("trace", any_of({path(), mapping(trace_entry_schema())}),
+                      "the trace file, or {file, turned} (or traces)"),
+         optional_key("traces", sequence(any_of({path(), mapping(trace_entry_schema())}), 1, 1000),
+                      "the trace files, each or {file, turned} (or trace)"),
          optional_key("format", mapping(format_schema()), "how the trace files are laid out"),
          optional_key("effects", mapping(effects_schema(EffectHome::measurement)), "effects to switch on")},
         false,
@@ -197,19 +212,33 @@ Measurement read_measurement(const Node& root) {
     d.loc = root.loc();
     return d;
   }();
-  std::vector<std::pair<Node, std::string>> paths;
+  // Each trace: a path, or {file, turned}.
+  auto read_entry = [&](const Node& parent, std::string_view key, const Node& node) {
+    std::string path;
+    double turned = 0;
+    if (node.is_map()) {
+      MapReader entry(node, "a trace", trace_entry_schema());
+      path = files.resolve(node, "file", entry.required("file"));
+      if (std::optional<Node> turn = entry.optional("turned")) {
+        turned = read_quantity(*turn, dim::angle);
+        if (std::abs(turned) > 2 * std::numbers::pi) turn->fail("an angle from -360 deg to 360 deg");
+        if (out.rig == Rig::plates) turn->fail("no 'turned' with rig: plates (no hinge to turn about)", "one");
+      }
+    } else {
+      path = files.resolve(parent, key, node);
+    }
+    TableFormat f = format;
+    f.loc = node.loc();
+    out.traces.push_back(read_trace(path, f, out.rig, kMinRows));
+    out.traces.back().turned = turned;
+  };
   if (std::optional<Node> t = m.optional("trace")) {
-    paths.emplace_back(*t, files.resolve(root, "trace", *t));
+    read_entry(root, "trace", *t);
   } else {
     const Node list = m.required("traces");
     if (!list.is_sequence() || list.size() == 0) list.fail("a list of trace files");
     if (list.size() > 1000) list.fail("at most 1000 traces", std::to_string(list.size()));
-    for (size_t i = 0; i < list.size(); ++i) paths.emplace_back(list[i], files.resolve(root, "traces", list[i]));
-  }
-  for (const auto& [node, path] : paths) {
-    TableFormat f = format;
-    f.loc = node.loc();
-    out.traces.push_back(read_trace(path, f, out.rig, kMinRows));
+    for (size_t i = 0; i < list.size(); ++i) read_entry(root, "traces", list[i]);
   }
   if (std::optional<Node> e = m.optional("effects")) out.options.effects = read_effects(*e, EffectHome::measurement);
   return out;

@@ -34,6 +34,7 @@ const char* signal_name(Signal s);
 // One measured trace: columns by signal, each as long as `t` or empty.
 struct Trace {
   std::string file;
+  double turned = 0;  // rad, the tool turned about its hinge from how its file holds it (gravity turns with it)
   std::array<std::vector<double>, kSignals> column;
   const std::vector<double>& operator[](Signal s) const { return column[static_cast<size_t>(s)]; }
   std::vector<double>& operator[](Signal s) { return column[static_cast<size_t>(s)]; }

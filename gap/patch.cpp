@@ -85,8 +85,14 @@ std::vector<std::string> write_patch(const Measurement& m, const Diagnosis& d, c
     }
     measurement["actee"]["file"] = actee_path;
   }
-  // The traces stay where they are.
-  auto absolute = [&](const YAML::Node& n) { return (here / n.as<std::string>()).lexically_normal().string(); };
+  // The traces stay where they are (a {file, turned} entry keeps its turn).
+  auto absolute = [&](YAML::Node n) {
+    YAML::Node path = n.IsMap() ? n["file"] : n;
+    const std::string full = (here / path.as<std::string>()).lexically_normal().string();
+    if (!n.IsMap()) return YAML::Node(full);
+    n["file"] = full;
+    return n;
+  };
   if (measurement["trace"]) measurement["trace"] = absolute(measurement["trace"]);
   if (measurement["traces"]) {
     for (size_t i = 0; i < measurement["traces"].size(); ++i) measurement["traces"][i] = absolute(measurement["traces"][i]);

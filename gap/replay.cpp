@@ -3,52 +3,45 @@
 #include <algorithm>
 #include <cmath>
 
+#include "derivatives.h"
 #include "state.h"
 #include "terms.h"
 
 namespace afford {
 namespace {
 
-constexpr double kRateWindow = 0.005;    // s: rates by central differences over +- this
 constexpr double kReversalWindow = 0.02; // s: samples this near a change of direction are a reversal
+constexpr double kReversalSpeed = 0.2;  // of the peak speed: a reversal lasts until the speed is back above this
 constexpr double kLimitBand = 1e-3;      // rad: this near an angle limit counts as at it
 constexpr double kSignWidth = 1e-3;      // rad/s: friction's sign turns over this speed
 
-// Central differences of y over +- kRateWindow (one-sided at the ends).
-std::vector<double> rate_of(const std::vector<double>& t, const std::vector<double>& y) {
-  const size_t n = t.size();
-  const double dt = (t.back() - t.front()) / static_cast<double>(n - 1);
-  const size_t k = std::max<size_t>(1, static_cast<size_t>(std::lround(kRateWindow / dt)));
-  std::vector<double> r(n);
-  for (size_t i = 0; i < n; ++i) {
-    const size_t lo = i >= k ? i - k : 0, hi = std::min(n - 1, i + k);
-    r[i] = (y[hi] - y[lo]) / (t[hi] - t[lo]);
-  }
-  return r;
-}
-
 // Phases from direction, contact and the limits; `limit` and `broken` say
 // which samples are at a limit and after the break.
-void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vector<bool>& broken) {
+// `edge` samples at either end are not fitted: there the rates are
+// extrapolated from one side, which misses a start's transient.
+void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vector<bool>& broken, size_t edge,
+                   double rate_noise_gain) {
   // A lever closes as its angle falls; plates load as their displacement grows.
   const double closing = r.rig == Rig::lever ? -1.0 : 1.0;
   const size_t n = r.t.size();
-  double peak = 0;
-  for (double w : r.rate) peak = std::max(peak, std::abs(w));
+  // The drive's top speed, as its 95th percentile: a transient's spike
+  // (a start, a ringing) is not the speed the drive runs at.
+  std::vector<double> speeds(n);
+  for (size_t i = 0; i < n; ++i) speeds[i] = std::abs(r.rate[i]);
+  const auto top = speeds.begin() + static_cast<long>(0.95 * static_cast<double>(n - 1));
+  std::nth_element(speeds.begin(), top, speeds.end());
+  const double peak = *top;
   // Below this speed the arm is at rest: there Coulomb friction takes any
   // value up to its limit, which the motion alone cannot tell.
   // ... and below three times the noise of the rate itself, where its sign
   // is the noise's (the noise of x from its second differences, as a
-  // median: the rate's is sqrt(2) of it over the difference's span).
+  // median, through the differentiator's gain).
   std::vector<double> d2;
   for (size_t i = 0; i + 2 < n; ++i) d2.push_back(std::abs(r.x[i] - 2 * r.x[i + 1] + r.x[i + 2]));
   double rate_noise = 0;
   if (!d2.empty()) {
     std::nth_element(d2.begin(), d2.begin() + static_cast<long>(d2.size() / 2), d2.end());
-    const double x_noise = 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
-    const double dt = (r.t.back() - r.t.front()) / static_cast<double>(n - 1);
-    const double span = 2 * std::max(1.0, std::round(kRateWindow / dt)) * dt;
-    rate_noise = std::sqrt(2.0) * x_noise / span;
+    rate_noise = 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0) * rate_noise_gain;
   }
   const double still = std::max({1e-9, 0.01 * peak, 3 * rate_noise});
   r.phase.assign(n, Phase::at_rest);
@@ -64,10 +57,17 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
     if (sign < 0) r.phase[i] = contact ? Phase::loading : Phase::free_closing;
     if (sign > 0) r.phase[i] = contact ? Phase::unloading : Phase::free_opening;
   }
+  // A reversal runs from kReversalWindow before a change of direction to
+  // as long after it, and on while the speed stays below a fraction of
+  // its peak: there friction turns over (sticks, creeps, breaks away) at a
+  // pace set by what drives the tool, which no term of the library models.
+  const double slow = kReversalSpeed * peak;
   for (size_t turn : turns) {
-    const auto from = std::lower_bound(r.t.begin(), r.t.end(), r.t[turn] - kReversalWindow);
-    const auto to = std::upper_bound(r.t.begin(), r.t.end(), r.t[turn] + kReversalWindow);
-    for (auto it = from; it != to; ++it) r.phase[static_cast<size_t>(it - r.t.begin())] = Phase::reversal;
+    auto from = static_cast<size_t>(std::lower_bound(r.t.begin(), r.t.end(), r.t[turn] - kReversalWindow) - r.t.begin());
+    auto to = static_cast<size_t>(std::upper_bound(r.t.begin(), r.t.end(), r.t[turn] + kReversalWindow) - r.t.begin());
+    while (from > 0 && std::abs(r.rate[from - 1]) < slow) --from;
+    while (to < n && std::abs(r.rate[to]) < slow) ++to;
+    for (size_t i = from; i < to; ++i) r.phase[i] = Phase::reversal;
   }
   for (size_t i = 0; i < n; ++i) {
     if (at_limit[i]) r.phase[i] = Phase::at_limit;
@@ -75,7 +75,8 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
     // A limit's reaction, a broken actee, and friction at rest and while it
     // turns over at a reversal are outside what the model predicts from
     // the motion: reported, not fitted or scored.
-    r.fitted[i] = !at_limit[i] && !broken[i] && std::abs(r.rate[i]) > still && r.phase[i] != Phase::reversal;
+    r.fitted[i] = !at_limit[i] && !broken[i] && std::abs(r.rate[i]) > still && r.phase[i] != Phase::reversal &&
+                  i >= edge && i + edge < n;
   }
 }
 
@@ -102,16 +103,18 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
   const bool actee = model.has_actee && state->between_jaws;
   const double a = actee ? std::abs(state->load_distance) : 0.0;
   const double b = std::abs(m.effort_at);
-  double g_cos = 0, g_sin = 0;
-  gravity_coefficients(model, model.object_start.linear(), &g_cos, &g_sin);
   std::vector<Replay> out;
   for (const Trace& trace : m.traces) {
+    double g_cos = 0, g_sin = 0;
+    gravity_coefficients(model, model.object_start.linear(), &g_cos, &g_sin, trace.turned);
     Replay r;
     r.file = trace.file;
+    r.turned = trace.turned;
     r.t = trace[Signal::t];
     r.x = trace[Signal::angle];
-    r.rate = rate_of(r.t, r.x);
-    r.accel = rate_of(r.t, r.rate);
+    Derivatives d = local_derivatives(r.t, r.x);
+    r.rate = std::move(d.rate);
+    r.accel = std::move(d.accel);
     r.to_newtons = 1 / b;
     const size_t n = r.t.size();
     r.measured.resize(n);
@@ -150,7 +153,8 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       const std::vector<double> prompt = r.nominal;
       for (size_t i = 0; i < n; ++i) r.nominal[i] = value_at(r.t, prompt, r.t[i] - model.sensor_latency);
     }
-    assign_phases(r, at_limit, broken);
+    // Within the fit's half-width of either end the rates are one-sided.
+    assign_phases(r, at_limit, broken, d.half_width, d.rate_noise_gain);
     out.push_back(std::move(r));
   }
   return out;
@@ -165,8 +169,9 @@ std::vector<Replay> replay_plates(const Model& model, const Measurement& m) {
     r.rig = Rig::plates;
     r.t = trace[Signal::t];
     r.x = trace[Signal::displacement];
-    r.rate = rate_of(r.t, r.x);
-    r.accel = rate_of(r.t, r.rate);
+    Derivatives d = local_derivatives(r.t, r.x);
+    r.rate = std::move(d.rate);
+    r.accel = std::move(d.accel);
     const size_t n = r.t.size();
     r.measured = trace[Signal::force];
     r.nominal.resize(n);
@@ -188,7 +193,7 @@ std::vector<Replay> replay_plates(const Model& model, const Measurement& m) {
       r.nominal[i] = actee_force_law(model, r.deflection[i], thickness, &slope);
       broken[i] = i >= rupture;
     }
-    assign_phases(r, at_limit, broken);
+    assign_phases(r, at_limit, broken, 0, d.rate_noise_gain);  // the plates' law needs no rates
     out.push_back(std::move(r));
   }
   return out;

@@ -20,6 +20,7 @@ const char* phase_name(Phase p);
 // fulcrum, N*m (the effort times its lever arm); for plates the force, N.
 struct Replay {
   std::string file;
+  double turned = 0;             // rad, the tool turned about its hinge (Trace::turned)
   std::vector<double> t;         // s
   std::vector<double> x;         // rad (lever angle) or m (plate displacement)
   std::vector<double> rate;      // rad/s or m/s

@@ -38,8 +38,10 @@ std::string si_quantity(double si, const EffectParam& p) {
 std::string report_text(const Diagnosis& d) {
   std::string out = "measurement " + d.measurement + ": verdict " + verdict_name(d.verdict) + "\n";
   char line[512];
-  std::snprintf(line, sizeof line, "held-out RMSE %.4g N before, %.4g N after (shrink %.0f %%); noise about %.3g N\n",
-                d.rmse_before, d.rmse_after, 100 * d.shrink, d.noise);
+  std::snprintf(line, sizeof line,
+                "held-out RMSE %.4g N before, %.4g N after (shrink %.0f %%); noise about %.3g N, %.3g N with the "
+                "motion's noise through the model\n",
+                d.rmse_before, d.rmse_after, 100 * d.shrink, d.noise, d.noise_through_model);
   out += line;
   std::snprintf(line, sizeof line, "judged by cross-validation over %zu folds of %zu traces\n", d.folds, d.judged_on.size());
   out += line;
@@ -146,6 +148,7 @@ std::string report_json(const Diagnosis& d) {
             {"rmse_before", num(d.rmse_before)},
             {"rmse_after", num(d.rmse_after)},
             {"noise", num(d.noise)},
+            {"noise_through_model", num(d.noise_through_model)},
             {"unit", "N"},
             {"phases", phases},
             {"where", d.where},

@@ -43,8 +43,14 @@ Tool tool_from(const std::string& file) {
   return t;
 }
 
-const std::vector<Profile> kProfiles = {
-    {"sine-slow", 2.0, false, 4.0}, {"triangle-fast", 0.5, true, 4.0}, {"sine-fast", 0.5, false, 4.0}, {"triangle-slow", 2.0, true, 4.0}};
+// Two drives with the tool turned on its side and upside down, as an
+// experimenter tells the arm's weight from the spring's preload: the
+// weight's torque turns with the tool, the preload's does not.
+constexpr double kQuarterTurn = 1.57079632679489662;
+const std::vector<Profile> kProfiles = {{"sine-slow", 2.0, false, 4.0, 0},
+                                        {"triangle-fast", 0.5, true, 4.0, 0},
+                                        {"sine-fast", 0.5, false, 4.0, kQuarterTurn},
+                                        {"triangle-slow", 2.0, true, 4.0, 2 * kQuarterTurn}};
 
 // Hidden effects sized at a fifth of the spring's torque swing over the drive.
 std::vector<std::pair<std::string, Truth>> truths(const Tool& tool) {
@@ -111,7 +117,9 @@ int main(int argc, char** argv) {
           std::snprintf(row, sizeof row, "%.3f,%.6f,%.4f,%.1f\n", s.t, s.angle, s.effort, s.actee);
           csv << row;
         }
-        traces += (traces.empty() ? "" : ", ") + trace;
+        char entry[256];
+        std::snprintf(entry, sizeof entry, "{file: %s, turned: %.6g deg}", trace.c_str(), p.turned * 90 / kQuarterTurn);
+        traces += (traces.empty() ? "" : ", ") + std::string(entry);
       }
       char effort_at[64];
       std::snprintf(effort_at, sizeof effort_at, "%.6g mm", tool.effort_sign * tool.effort_at * 1000);

@@ -39,9 +39,13 @@ constexpr double kEffortQuantum = 0.005;  // N
 constexpr double kAngleNoise = 1e-4;    // rad
 constexpr double kAngleQuantum = 1e-5;  // rad
 
-std::string mjcf(const Tool& tool, const Truth& truth) {
+std::string mjcf(const Tool& tool, const Truth& truth, double turned) {
   const double springref = tool.rest + (tool.preload_torque + truth.preload) / tool.torsion;
   const double mass = truth.weight > 0 ? truth.weight / (kG * kWeightRadius) : 1e-6;
+  // Gravity in the plane of motion, turned with the tool: the weight's
+  // torque is -weight * cos(angle + turned).
+  char gravity[64];
+  std::snprintf(gravity, sizeof gravity, "%.9g %.9g 0", -kG * std::sin(turned), -kG * std::cos(turned));
   char xml[2048];
   std::snprintf(xml, sizeof xml,
                 "<mujoco model='gapcheck'>\n"
@@ -56,7 +60,7 @@ std::string mjcf(const Tool& tool, const Truth& truth) {
                 "  <actuator><general name='servo' joint='hinge' gaintype='fixed' gainprm='20' biastype='affine'\n"
                 "                     biasprm='0 -20 -0.1'/></actuator>\n"
                 "</mujoco>\n",
-                kStep, truth.weight > 0 ? "0 -9.81 0" : "0 0 -9.81", tool.theta_min - 0.2, tool.theta_max + 0.2,
+                kStep, truth.weight > 0 ? gravity : "0 0 -9.81", tool.theta_min - 0.2, tool.theta_max + 0.2,
                 tool.torsion, springref, tool.friction + truth.friction, truth.damping, kMinInertia + truth.inertia,
                 kWeightRadius, mass);
   return xml;
@@ -78,7 +82,7 @@ double quantise(double x, double q) { return q * std::round(x / q); }
 std::vector<Sample> simulate(const Tool& tool, const Truth& truth, const Profile& profile, unsigned seed) {
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / ("gapcheck-" + std::to_string(seed) + "-" + std::to_string(::getpid()) + ".xml");
-  std::ofstream(file) << mjcf(tool, truth);
+  std::ofstream(file) << mjcf(tool, truth, profile.turned);
   char error[1000] = "";
   mjModel* m = mj_loadXML(file.c_str(), nullptr, error, sizeof error);
   std::filesystem::remove(file);

@@ -41,6 +41,7 @@ struct Profile {
   double period = 0; // s
   bool triangle = false;
   double seconds = 0;
+  double turned = 0;  // rad, the tool turned about its hinge (gravity turns with it)
 };
 
 struct Sample {

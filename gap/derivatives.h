@@ -1,0 +1,23 @@
+// The rate and acceleration of a measured signal, by a local polynomial
+// (Savitzky-Golay's least squares, on the samples' own times): a degree-6
+// polynomial over +-25 ms passes a 20 Hz oscillation's acceleration within
+// 1 % (central differences of central differences over +-5 ms lose 13 %,
+// with twice the noise), so an arm's inertia is seen in a servo's ringing.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace afford {
+
+struct Derivatives {
+  std::vector<double> rate;   // dy/dt
+  std::vector<double> accel;  // d2y/dt2
+  size_t half_width = 0;      // samples each side of the fit: nearer the ends it is one-sided
+  double rate_noise_gain = 0; // the rate's noise per unit of y's (white) noise, 1/s, inside
+};
+
+// `t` increasing, the same length as `y`, at least 2 samples.
+Derivatives local_derivatives(const std::vector<double>& t, const std::vector<double>& y);
+
+}  // namespace afford
