@@ -42,6 +42,7 @@ Derivatives local_derivatives(const std::vector<double>& t, const std::vector<do
     if (i == n / 2) {  // an inside sample: the rate's variance per unit noise
       const Eigen::MatrixXd cov = (a.transpose() * a).inverse();
       d.rate_noise_gain = std::sqrt(cov(1, 1)) / h;
+      if (degree >= 2) d.accel_noise_gain = 2 * std::sqrt(cov(2, 2)) / (h * h);
     }
   }
   return d;

@@ -15,6 +15,7 @@ struct Derivatives {
   std::vector<double> accel;  // d2y/dt2
   size_t half_width = 0;      // samples each side of the fit: nearer the ends it is one-sided
   double rate_noise_gain = 0; // the rate's noise per unit of y's (white) noise, 1/s, inside
+  double accel_noise_gain = 0; // the acceleration's, 1/s^2
 };
 
 // `t` increasing, the same length as `y`, at least 2 samples.

@@ -26,6 +26,9 @@ std::vector<Replay> halves(const Replay& r) {
     auto cut = [&](const auto& v) { return std::decay_t<decltype(v)>(v.begin() + static_cast<long>(from), v.begin() + static_cast<long>(to)); };
     h.file = r.file + (from == 0 ? " (first half)" : " (second half)");
     h.turned = r.turned;
+    h.x_noise = r.x_noise;
+    h.rate_noise = r.rate_noise;
+    h.accel_noise = r.accel_noise;
     h.rig = r.rig;
     h.to_newtons = r.to_newtons;
     h.t = cut(r.t);
@@ -65,30 +68,16 @@ double noise_of(const std::vector<Replay>& replays) {
   return 1.4826 * *mid / std::sqrt(6.0);
 }
 
-// The deviation of the angle's (or displacement's) own noise, as noise_of
-// finds the effort's.
-double input_noise_of(const std::vector<Replay>& replays) {
-  std::vector<double> d2;
-  for (const Replay& r : replays) {
-    for (size_t i = 0; i + 2 < r.t.size(); ++i) {
-      if (r.fitted[i] && r.fitted[i + 1] && r.fitted[i + 2]) d2.push_back(std::abs(r.x[i] - 2 * r.x[i + 1] + r.x[i + 2]));
-    }
-  }
-  if (d2.empty()) return 0.0;
-  auto mid = d2.begin() + static_cast<long>(d2.size() / 2);
-  std::nth_element(d2.begin(), mid, d2.end());
-  return 1.4826 * *mid / std::sqrt(6.0);
-}
-
 // The measurement replayed with as much noise again added to its angles
 // (or displacements), from a fixed seed: the same measurement as the
 // model sees it through a second, independent sensor of the motion.
-std::vector<Replay> replay_with_input_noise(const Model& model, Measurement m, double deviation, bool split) {
+std::vector<Replay> replay_with_input_noise(const Model& model, Measurement m, const std::vector<double>& deviation,
+                                           bool split) {
   std::mt19937 random(20261123);
-  std::normal_distribution<double> noise(0.0, deviation);
+  std::normal_distribution<double> noise(0.0, 1.0);
   const Signal x = m.rig == Rig::lever ? Signal::angle : Signal::displacement;
-  for (Trace& trace : m.traces) {
-    for (double& v : trace[x]) v += noise(random);
+  for (size_t i = 0; i < m.traces.size(); ++i) {
+    for (double& v : m.traces[i][x]) v += deviation[i] * noise(random);
   }
   std::vector<Replay> replays = m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m);
   return split ? halves(replays.front()) : replays;
@@ -295,6 +284,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   const Model model = m.rig == Rig::lever ? compile_measurement(m) : compile_actee_only(*m.actee, m.options);
   std::vector<Replay> replays = m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m);
   const bool split = replays.size() == 1;
+  std::vector<double> x_noise;  // each trace's motion sensor's
+  for (const Replay& r : replays) x_noise.push_back(r.x_noise);
   // Cross-validation: each fold's traces are judged by a fit on the others
   // (a single trace is cut in halves, each judged by the other); the
   // parameters reported come from a fit on every trace.
@@ -313,7 +304,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   d.folds = folds;
   d.noise = noise_of(replays);
   const Fitter fitter(model, replays, all, {});
-  const std::vector<Replay> noisier = replay_with_input_noise(model, m, input_noise_of(replays), split);
+  const std::vector<Replay> noisier = replay_with_input_noise(model, m, x_noise, split);
   const Fitter noisier_fitter(model, noisier, all, {});
   // What the model cannot match better than: the effort's noise and the
   // motion's, passed through the set's prediction.

@@ -170,11 +170,25 @@ double Fitter::solve(const std::vector<size_t>& on, const std::vector<EffectKind
   std::vector<double> base;
   std::vector<std::vector<double>> cols;
   Eigen::VectorXd row(static_cast<Eigen::Index>(k));
+  // The rate and the acceleration are differentiated from a noisy angle:
+  // their noise inflates their columns' sums of squares and so shrinks
+  // what least squares gives their effects (damping, inertia: errors in
+  // the variables). Its known variance is taken off the diagonal
+  // (bias-compensated least squares).
+  Eigen::VectorXd inflation = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
   for (size_t i : on) {
     columns(i, linear, nl, &base, &cols);
     const Replay& r = replays_[i];
+    Eigen::VectorXd per_sample = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
+    for (size_t c = 0; c < linear.size(); ++c) {
+      const double sd = linear[c] == EffectKind::arm_inertia     ? r.accel_noise
+                        : linear[c] == EffectKind::viscous_damping ? r.rate_noise
+                                                                   : 0.0;
+      per_sample[static_cast<Eigen::Index>(c)] = sd * r.to_newtons * sd * r.to_newtons;
+    }
     for (size_t s = 0; s < base.size(); ++s) {
       if (!r.fitted[s]) continue;
+      inflation += per_sample;
       const double y = r.measured[s] * r.to_newtons - base[s];
       for (size_t c = 0; c < k; ++c) row[static_cast<Eigen::Index>(c)] = cols[c][s];
       xtx.noalias() += row * row.transpose();
@@ -189,8 +203,13 @@ double Fitter::solve(const std::vector<size_t>& on, const std::vector<EffectKind
   if (k == 0) return yty;
   // Normal equations, scaled to unit diagonal so that columns of very
   // different sizes (a cubic spring, a friction sign) stay well conditioned.
-  Eigen::VectorXd scale = xtx.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
-  const Eigen::MatrixXd a = scale.asDiagonal() * xtx * scale.asDiagonal();
+  Eigen::MatrixXd compensated = xtx;
+  for (Eigen::Index c = 0; c < compensated.rows(); ++c) {
+    // Never more than half: a column that is mostly noise stays as it is.
+    compensated(c, c) -= std::min(inflation[c], 0.5 * compensated(c, c));
+  }
+  Eigen::VectorXd scale = compensated.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+  const Eigen::MatrixXd a = scale.asDiagonal() * compensated * scale.asDiagonal();
   const Eigen::LDLT<Eigen::MatrixXd> ldlt(a);
   const Eigen::VectorXd z = ldlt.solve(scale.asDiagonal() * xty);
   const Eigen::VectorXd beta = scale.asDiagonal() * z;

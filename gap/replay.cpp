@@ -15,12 +15,30 @@ constexpr double kReversalSpeed = 0.2;  // of the peak speed: a reversal lasts u
 constexpr double kLimitBand = 1e-3;      // rad: this near an angle limit counts as at it
 constexpr double kSignWidth = 1e-3;      // rad/s: friction's sign turns over this speed
 
+// x, its rate and acceleration, and their noise: white noise of deviation
+// s gives second differences of deviation s * sqrt(6), which a smooth
+// motion hardly adds to; their median absolute deviation (times 1.4826
+// for a normal law) is not moved by a few jumps.
+Derivatives differentiate(Replay& r) {
+  Derivatives d = local_derivatives(r.t, r.x);
+  std::vector<double> d2;
+  for (size_t i = 0; i + 2 < r.x.size(); ++i) d2.push_back(std::abs(r.x[i] - 2 * r.x[i + 1] + r.x[i + 2]));
+  if (!d2.empty()) {
+    std::nth_element(d2.begin(), d2.begin() + static_cast<long>(d2.size() / 2), d2.end());
+    r.x_noise = 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
+  }
+  r.rate_noise = r.x_noise * d.rate_noise_gain;
+  r.accel_noise = r.x_noise * d.accel_noise_gain;
+  r.rate = std::move(d.rate);
+  r.accel = std::move(d.accel);
+  return d;
+}
+
 // Phases from direction, contact and the limits; `limit` and `broken` say
 // which samples are at a limit and after the break.
 // `edge` samples at either end are not fitted: there the rates are
 // extrapolated from one side, which misses a start's transient.
-void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vector<bool>& broken, size_t edge,
-                   double rate_noise_gain) {
+void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vector<bool>& broken, size_t edge) {
   // A lever closes as its angle falls; plates load as their displacement grows.
   const double closing = r.rig == Rig::lever ? -1.0 : 1.0;
   const size_t n = r.t.size();
@@ -34,16 +52,8 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
   // Below this speed the arm is at rest: there Coulomb friction takes any
   // value up to its limit, which the motion alone cannot tell.
   // ... and below three times the noise of the rate itself, where its sign
-  // is the noise's (the noise of x from its second differences, as a
-  // median, through the differentiator's gain).
-  std::vector<double> d2;
-  for (size_t i = 0; i + 2 < n; ++i) d2.push_back(std::abs(r.x[i] - 2 * r.x[i + 1] + r.x[i + 2]));
-  double rate_noise = 0;
-  if (!d2.empty()) {
-    std::nth_element(d2.begin(), d2.begin() + static_cast<long>(d2.size() / 2), d2.end());
-    rate_noise = 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0) * rate_noise_gain;
-  }
-  const double still = std::max({1e-9, 0.01 * peak, 3 * rate_noise});
+  // is the noise's.
+  const double still = std::max({1e-9, 0.01 * peak, 3 * r.rate_noise});
   r.phase.assign(n, Phase::at_rest);
   r.fitted.assign(n, true);
   int last_sign = 0;
@@ -112,9 +122,7 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
     r.turned = trace.turned;
     r.t = trace[Signal::t];
     r.x = trace[Signal::angle];
-    Derivatives d = local_derivatives(r.t, r.x);
-    r.rate = std::move(d.rate);
-    r.accel = std::move(d.accel);
+    const Derivatives d = differentiate(r);
     r.to_newtons = 1 / b;
     const size_t n = r.t.size();
     r.measured.resize(n);
@@ -154,7 +162,7 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       for (size_t i = 0; i < n; ++i) r.nominal[i] = value_at(r.t, prompt, r.t[i] - model.sensor_latency);
     }
     // Within the fit's half-width of either end the rates are one-sided.
-    assign_phases(r, at_limit, broken, d.half_width, d.rate_noise_gain);
+    assign_phases(r, at_limit, broken, d.half_width);
     out.push_back(std::move(r));
   }
   return out;
@@ -169,9 +177,7 @@ std::vector<Replay> replay_plates(const Model& model, const Measurement& m) {
     r.rig = Rig::plates;
     r.t = trace[Signal::t];
     r.x = trace[Signal::displacement];
-    Derivatives d = local_derivatives(r.t, r.x);
-    r.rate = std::move(d.rate);
-    r.accel = std::move(d.accel);
+    const Derivatives d = differentiate(r);
     const size_t n = r.t.size();
     r.measured = trace[Signal::force];
     r.nominal.resize(n);
@@ -193,7 +199,7 @@ std::vector<Replay> replay_plates(const Model& model, const Measurement& m) {
       r.nominal[i] = actee_force_law(model, r.deflection[i], thickness, &slope);
       broken[i] = i >= rupture;
     }
-    assign_phases(r, at_limit, broken, 0, d.rate_noise_gain);  // the plates' law needs no rates
+    assign_phases(r, at_limit, broken, 0);  // the plates' law needs no rates
     out.push_back(std::move(r));
   }
   return out;

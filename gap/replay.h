@@ -31,6 +31,9 @@ struct Replay {
   std::vector<double> actee_measured, actee_nominal;  // N, lever with an actee_force column; else empty
   std::vector<Phase> phase;
   std::vector<bool> fitted;      // used in fits and scores: not at a limit, not after a break
+  // The motion sensor's noise (deviation, from x's second differences) and
+  // what the differentiation makes of it in the rate and the acceleration.
+  double x_noise = 0, rate_noise = 0, accel_noise = 0;
   Rig rig = Rig::lever;
   double to_newtons = 1;         // 1 / lever arm (lever) or 1: main signal to N at the effort
 };

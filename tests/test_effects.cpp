@@ -209,6 +209,17 @@ TEST(Effects, GravityFollowsTheCosineOfTheArmAngle) {
     const double weight = -kG * 0.05 * (0.090 * std::cos(theta) - 0.005 * std::sin(theta));
     EXPECT_NEAR(c * std::cos(theta) + s * std::sin(theta), weight - 0.1 * std::cos(theta), 1e-12) << theta;
   }
+  // Turned further about its (level) hinge by phi, as a measurement may
+  // hold it: the arm then hangs as if at theta + phi, weight and extra alike.
+  for (double phi : {90 * kDeg, 180 * kDeg, -30 * kDeg}) {
+    double ct = 0, st = 0;
+    gravity_coefficients(m, m.object_start.linear(), &ct, &st, phi);
+    for (double theta : {0.0, 20 * kDeg}) {
+      const double a = theta + phi;
+      const double weight = -kG * 0.05 * (0.090 * std::cos(a) - 0.005 * std::sin(a));
+      EXPECT_NEAR(ct * std::cos(theta) + st * std::sin(theta), weight - 0.1 * std::cos(a), 1e-12) << phi << " " << theta;
+    }
+  }
   // Untouched, the tool settles where spring and weight balance; turned the
   // other way up, the weight opens it and the stop holds it.
   auto state = make_state(m);

@@ -46,15 +46,17 @@ struct Hidden {
   double friction = 0;   // N*m, Coulomb (an exact sign)
   double damping = 0;    // N*m*s/rad
   double inertia = 0;    // kg*m^2
+  double weight = 0;     // N*m, an unmodelled weight's torque amplitude: -weight * cos(theta + turned)
+  double angle_noise = 0;  // rad, the angle sensor's
 };
 
 // The shipped nutcracker (2000 N/m at 10 mm, 1.5 N preload, 0.01 N*m
 // friction) driven through 10 cycles of a 1 Hz sine between 8 and 28 deg,
 // measured at 160 mm at 1 kHz with 0.02 N of sensor noise; the effort by
 // moment balance written out here.
-std::string lever_trace(const Hidden& h, unsigned seed) {
+std::string lever_trace(const Hidden& h, unsigned seed, double turned = 0) {
   std::mt19937 random(seed);
-  std::normal_distribution<double> noise(0.0, 0.02);
+  std::normal_distribution<double> noise(0.0, 0.02), angle_noise(0.0, h.angle_noise > 0 ? h.angle_noise : 1.0);
   std::string csv = "t,angle,effort_force,actee_force\n";
   const double k = 2000, sp = 0.010, rest = 30 * kPi / 180, b = 0.160;
   for (int i = 0; i < 10000; ++i) {
@@ -65,9 +67,11 @@ std::string lever_trace(const Hidden& h, unsigned seed) {
     const double alpha = -10 * kPi / 180 * w * w * std::sin(w * t);
     const double spring = k * sp * (rest - theta) * sp + 1.5 * sp;
     const double sign = omega > 0 ? 1.0 : (omega < 0 ? -1.0 : 0.0);
-    const double torque = spring - (0.01 + h.friction) * sign - h.damping * omega - h.inertia * alpha;
+    const double torque = spring - (0.01 + h.friction) * sign - h.damping * omega - h.inertia * alpha -
+                          h.weight * std::cos(theta + turned);
+    const double measured_theta = theta + (h.angle_noise > 0 ? angle_noise(random) : 0.0);
     char row[128];
-    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,0\n", t, theta, torque / b + noise(random));
+    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,0\n", t, measured_theta, torque / b + noise(random));
     csv += row;
   }
   return csv;
@@ -79,6 +83,17 @@ fs::path lever_measurement(const std::string& name, const Hidden& h) {
   write(dir / "b.csv", lever_trace(h, 2));
   write(dir / "m.yaml", "measurement: " + name + "\nobject: " + kSource +
                             "/objects/nutcracker.yaml\neffort_at: 160 mm\ntraces: [a.csv, b.csv]\n");
+  return dir / "m.yaml";
+}
+
+// Two traces, the second with the tool upside down (turned 180 deg).
+fs::path turned_measurement(const std::string& name, const Hidden& h) {
+  const fs::path dir = scratch(name);
+  write(dir / "a.csv", lever_trace(h, 1));
+  write(dir / "b.csv", lever_trace(h, 2, kPi));
+  write(dir / "m.yaml", "measurement: " + name + "\nobject: " + kSource +
+                            "/objects/nutcracker.yaml\neffort_at: 160 mm\n"
+                            "traces: [a.csv, {file: b.csv, turned: 180 deg}]\n");
   return dir / "m.yaml";
 }
 
@@ -135,6 +150,61 @@ TEST(Gap, WithoutTheTrueEffectInTheLibraryItSaysUnexplained) {
   EXPECT_FALSE(d.residual.white);
   const std::string json = report_json(d);
   EXPECT_THAT(json, HasSubstr("\"verdict\":\"unexplained\""));
+}
+
+TEST(Gap, TurningTheToolTellsItsWeightFromThePreload) {
+  // 0.1 N*m of unmodelled weight (0.6 N at the effort), the tool held one
+  // way up and then the other: the weight's torque changes sign, a
+  // preload's would not.
+  const Hidden weight{0, 0, 0, 0.1, 0};
+  const Measurement m = load_measurement(turned_measurement("turned", weight).string());
+  ASSERT_EQ(m.traces.size(), 2u);
+  EXPECT_DOUBLE_EQ(m.traces[0].turned, 0.0);
+  EXPECT_NEAR(m.traces[1].turned, kPi, 1e-12);
+  const Diagnosis d = diagnose(m);
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  ASSERT_EQ(d.effects.size(), 1u) << report_text(d);
+  const EffectFit* g = find(d, EffectKind::gravity);
+  ASSERT_NE(g, nullptr) << report_text(d);
+  EXPECT_NEAR(g->value[0], 0.1, 0.005);
+  // With gravity taken out of the library no preload can stand in for it.
+  DiagnoseOptions options;
+  for (const EffectManifest& e : effect_registry()) {
+    if (e.kind != EffectKind::gravity) options.library.push_back(e.kind);
+  }
+  EXPECT_EQ(diagnose(m, options).verdict, Verdict::unexplained);
+}
+
+TEST(Gap, TheAnglesNoiseThroughAnInertiaIsPartOfTheNoiseFloor) {
+  // 0.002 kg*m^2 hidden, 1e-4 rad of angle noise: the acceleration, from a
+  // degree-6 polynomial over +-25 ms at 1 kHz, carries 1.15 rad/s^2 of it
+  // (the filter's gain, worked out from its coefficients), so the inertia
+  // passes 0.002 * 1.15 / 0.16 m = 0.0144 N into the predicted effort, and
+  // the floor is hypot(0.02, 0.0144) = 0.0246 N.
+  Hidden h;
+  h.inertia = 0.002;
+  h.angle_noise = 1e-4;
+  const Diagnosis d = diagnose(load_measurement(lever_measurement("inertia-noise", h).string()));
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  const EffectFit* f = find(d, EffectKind::arm_inertia);
+  ASSERT_NE(f, nullptr) << report_text(d);
+  EXPECT_NEAR(f->value[0], 0.002, 0.0001);
+  EXPECT_NEAR(d.noise, 0.02, 0.003);
+  EXPECT_NEAR(d.noise_through_model, 0.0246, 0.003);
+  EXPECT_LT(d.rmse_after, 1.3 * d.noise_through_model);
+}
+
+TEST(Gap, APatchKeepsHowEachTraceWasHeld) {
+  const fs::path file = turned_measurement("turned-patch", Hidden{0, 0, 0, 0.1, 0});
+  const Measurement m = load_measurement(file.string());
+  const Diagnosis d = diagnose(m);
+  ASSERT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  const fs::path dir = file.parent_path() / "patch";
+  (void)write_patch(m, d, dir.string());
+  const Measurement again = load_measurement((dir / "measurement.yaml").string());
+  ASSERT_EQ(again.traces.size(), 2u);
+  EXPECT_NEAR(again.traces[1].turned, kPi, 1e-9);
+  EXPECT_EQ(diagnose(again).verdict, Verdict::none);
 }
 
 TEST(Gap, JsonHasTheReportedFields) {
@@ -251,6 +321,19 @@ TEST(GapErrors, UnknownKeySaysDidYouMean) {
               HasSubstr("m.yaml:5:1: expected one of the keys of a measurement file"));
   EXPECT_THAT(measurement_error(kHead + "effort_at: 160 mm\ntrace: t.csv\ntraec: x\n", good_csv()),
               HasSubstr("found 'traec' (did you mean 'trace'?)"));
+}
+
+TEST(GapErrors, ATraceEntryIsChecked) {
+  EXPECT_THAT(measurement_error(kHead + "effort_at: 160 mm\ntraces: [{file: t.csv, turn: 90 deg}]\n", good_csv()),
+              HasSubstr("m.yaml:4:24: expected one of the keys of a trace (file, turned), found 'turn' (did you mean 'turned'?)"));
+  EXPECT_THAT(measurement_error(kHead + "effort_at: 160 mm\ntraces: [{file: t.csv, turned: 400 deg}]\n", good_csv()),
+              HasSubstr("m.yaml:4:32: expected an angle from -360 deg to 360 deg, found '400 deg'"));
+  EXPECT_THAT(measurement_error(kHead + "effort_at: 160 mm\ntrace: {turned: 90 deg}\n", good_csv()),
+              HasSubstr("m.yaml:4:8: expected key 'file'"));
+  EXPECT_THAT(measurement_error("measurement: m\nrig: plates\nactee: {file: " + kSource +
+                                    "/actees/walnut.yaml}\ntrace: {file: t.csv, turned: 90 deg}\n",
+                                "t,displacement,force\n" + std::string(60 * 6, ' ')),
+              HasSubstr("no 'turned' with rig: plates"));
 }
 
 TEST(GapErrors, EffortOutsideTheEmphasis) {
