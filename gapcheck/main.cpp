@@ -1,4 +1,4 @@
-// afford_gapcheck SOURCE OUT [FIRST_SEED]: makes the withheld set with MuJoCo (cases under
+// afford_gapcheck SOURCE OUT [FIRST_SEED [SIZE]]: makes the withheld set with MuJoCo (cases under
 // OUT/cases, labels apart under OUT/labels), then runs afford's gap
 // diagnosis on every case and, only then, reads the labels and scores it:
 // the confusion of true against named effects, effects named right,
@@ -52,11 +52,12 @@ const std::vector<Profile> kProfiles = {{"sine-slow", 2.0, false, 4.0, 0},
                                         {"sine-fast", 0.5, false, 4.0, kQuarterTurn},
                                         {"triangle-slow", 2.0, true, 4.0, 2 * kQuarterTurn}};
 
-// Hidden effects sized at a fifth of the spring's torque swing over the drive.
-std::vector<std::pair<std::string, Truth>> truths(const Tool& tool) {
+// Hidden effects sized at `fraction` of the spring's torque swing over the
+// drive (latency: 15 ms at a fifth, in proportion otherwise).
+std::vector<std::pair<std::string, Truth>> truths(const Tool& tool, double fraction) {
   const double amp = 0.4 * (tool.theta_max - tool.theta_min);
   const double swing = tool.torsion * 2 * amp;  // N*m
-  const double size = 0.2 * swing;
+  const double size = fraction * swing;
   const double omega_fast = amp * 2 * 3.14159265358979 / 0.5;
   const double alpha_fast = omega_fast * 2 * 3.14159265358979 / 0.5;
   const double deepest = tool.spring_position * (tool.rest - (tool.theta_min + 0.1 * (tool.theta_max - tool.theta_min))) +
@@ -68,7 +69,7 @@ std::vector<std::pair<std::string, Truth>> truths(const Tool& tool) {
   cubic.cubic = size / (tool.spring_position * deepest * deepest * deepest);
   inertia.inertia = size / alpha_fast;
   weight.weight = size;
-  latency.latency = 0.015;
+  latency.latency = 0.015 * fraction / 0.2;
   auto both = [](Truth a, const Truth& b) {
     a.friction += b.friction; a.damping += b.damping; a.preload += b.preload; a.cubic += b.cubic;
     a.inertia += b.inertia; a.weight += b.weight; a.latency += b.latency;
@@ -90,8 +91,9 @@ std::string joined(std::vector<std::string> names) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3 && argc != 4) {
-    std::fprintf(stderr, "usage: afford_gapcheck SOURCE_DIR OUT_DIR [FIRST_SEED]\n");
+  if (argc < 3 || argc > 5) {
+    std::fprintf(stderr, "usage: afford_gapcheck SOURCE_DIR OUT_DIR [FIRST_SEED [SIZE]]\n"
+                         "  SIZE: the hidden effects' size, a fraction of the spring's torque swing (default 0.2)\n");
     return 2;
   }
   const fs::path source = argv[1], out = argv[2];
@@ -102,10 +104,15 @@ int main(int argc, char** argv) {
   // 1. Make the set: traces and measurement files; the labels apart.
   std::vector<std::string> cases;
   // The noise's seeds: the development set used 1; report on another.
-  unsigned seed = argc == 4 ? static_cast<unsigned>(std::stoul(argv[3])) : 1001;
+  unsigned seed = argc >= 4 ? static_cast<unsigned>(std::stoul(argv[3])) : 1001;
+  const double fraction = argc == 5 ? std::stod(argv[4]) : 0.2;
+  if (!(fraction > 0 && fraction <= 1)) {
+    std::fprintf(stderr, "afford_gapcheck: SIZE must be above 0 and at most 1\n");
+    return 2;
+  }
   for (const char* object : {"nutcracker", "tongs", "pliers"}) {
     const Tool tool = tool_from((source / "objects" / (std::string(object) + ".yaml")).string());
-    for (const auto& [label, truth] : truths(tool)) {
+    for (const auto& [label, truth] : truths(tool, fraction)) {
       const std::string name = tool.name + "-" + std::to_string(cases.size());
       std::string traces;
       for (const Profile& p : kProfiles) {
