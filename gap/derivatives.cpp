@@ -23,27 +23,49 @@ Derivatives local_derivatives(const std::vector<double>& t, const std::vector<do
   d.rate.resize(n);
   d.accel.resize(n);
   d.half_width = m;
-  Eigen::MatrixXd a(2 * m + 1, degree + 1);
-  Eigen::VectorXd b(2 * m + 1);
+  const long w = static_cast<long>(2 * m + 1);
+  // The fit's coefficients as weights on the window's samples, for a
+  // window of evenly spaced samples (most are): one dot product a sample.
+  Eigen::MatrixXd a(w, degree + 1);
+  auto design = [&](size_t from, size_t i, double h) {
+    for (long j = 0; j < w; ++j) {
+      const double u = (t[from + static_cast<size_t>(j)] - t[i]) / h;
+      double p = 1;
+      for (int k = 0; k <= degree; ++k, p *= u) a(j, k) = p;
+    }
+  };
+  const double even_h = static_cast<double>(m) * dt;
+  for (long j = 0; j < w; ++j) {
+    const double u = static_cast<double>(j - static_cast<long>(m)) * dt / even_h;
+    double p = 1;
+    for (int k = 0; k <= degree; ++k, p *= u) a(j, k) = p;
+  }
+  const Eigen::MatrixXd cov = (a.transpose() * a).inverse();
+  const Eigen::MatrixXd even = cov * a.transpose();  // coefficients = even * window
+  d.rate_noise_gain = degree >= 1 ? std::sqrt(cov(1, 1)) / even_h : 0.0;
+  d.accel_noise_gain = degree >= 2 ? 2 * std::sqrt(cov(2, 2)) / (even_h * even_h) : 0.0;
+  Eigen::VectorXd b(w);
   for (size_t i = 0; i < n; ++i) {
     // The window keeps its width at the ends, shifted inside the trace.
     const size_t from = std::min(i >= m ? i - m : 0, n - 1 - 2 * m);
-    // Times relative to sample i, scaled by the window for conditioning.
-    const double h = std::max(t[from + 2 * m] - t[from], 1e-300) / 2;
-    for (size_t j = 0; j <= 2 * m; ++j) {
-      const double u = (t[from + j] - t[i]) / h;
-      double p = 1;
-      for (int k = 0; k <= degree; ++k, p *= u) a(static_cast<long>(j), k) = p;
-      b(static_cast<long>(j)) = y[from + j];
+    for (long j = 0; j < w; ++j) b(j) = y[from + static_cast<size_t>(j)];
+    bool evenly = from + m == i;
+    for (long j = 0; evenly && j < w; ++j) {
+      const double off = t[from + static_cast<size_t>(j)] - t[i] - static_cast<double>(j - static_cast<long>(m)) * dt;
+      evenly = std::abs(off) <= 1e-6 * dt;
     }
-    const Eigen::VectorXd c = a.colPivHouseholderQr().solve(b);
+    Eigen::VectorXd c;
+    double h = even_h;
+    if (evenly) {
+      c = even.topRows(std::min(degree + 1, 3)) * b;
+    } else {
+      // Times relative to sample i, scaled by the window for conditioning.
+      h = std::max(t[from + 2 * m] - t[from], 1e-300) / 2;
+      design(from, i, h);
+      c = a.colPivHouseholderQr().solve(b);
+    }
     d.rate[i] = degree >= 1 ? c(1) / h : 0.0;
     d.accel[i] = degree >= 2 ? 2 * c(2) / (h * h) : 0.0;
-    if (i == n / 2) {  // an inside sample: the rate's variance per unit noise
-      const Eigen::MatrixXd cov = (a.transpose() * a).inverse();
-      d.rate_noise_gain = std::sqrt(cov(1, 1)) / h;
-      if (degree >= 2) d.accel_noise_gain = 2 * std::sqrt(cov(2, 2)) / (h * h);
-    }
   }
   return d;
 }

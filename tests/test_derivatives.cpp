@@ -32,6 +32,21 @@ TEST(Derivatives, APolynomialOfTheFitsDegreeIsDifferentiatedExactly) {
   }
 }
 
+TEST(Derivatives, UnevenSamplesAreFittedOnTheirOwnTimes) {
+  // A logger that drifts: 1 ms steps with a slow 0.2 ms wobble; y = t^3,
+  // y' = 3 t^2, y'' = 6 t, exact for the degree-6 fit on any times.
+  std::vector<double> t, y;
+  for (int i = 0; i < 300; ++i) {
+    t.push_back(i * 1e-3 + 2e-4 * std::sin(i * 0.1));
+    y.push_back(t.back() * t.back() * t.back());
+  }
+  const Derivatives d = local_derivatives(t, y);
+  for (size_t i = 0; i < t.size(); i += 23) {
+    EXPECT_NEAR(d.rate[i], 3 * t[i] * t[i], 1e-8) << t[i];
+    EXPECT_NEAR(d.accel[i], 6 * t[i], 1e-5) << t[i];
+  }
+}
+
 TEST(Derivatives, ARingingAt20HzKeepsItsAcceleration) {
   // 0.01 rad at 20 Hz: the acceleration is -0.01 (2 pi 20)^2 sin(w t),
   // 157.9 rad/s^2 at its peak; the fit passes it within 1 % (the filter's
