@@ -10,20 +10,12 @@
 #include "explore_json.h"
 #include "reports.h"
 #include "files.h"
+#include "test_util.h"
 
 namespace afford {
 namespace {
 
-// The message a call throws (any std::exception), or "" when it throws none.
-template <class F>
-std::string thrown(F&& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::thrown;
 #define EXPECT_THROW_MSG(call, text) EXPECT_NE(thrown([&] { (void)(call); }).find(text), std::string::npos) << thrown([&] { (void)(call); })
 
 const std::string kSource = AFFORD_SOURCE_DIR;

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "errors.h"
+#include "test_util.h"
 #include "expr.h"
 #include "files.h"
 #include "load.h"
@@ -34,13 +35,10 @@ std::string rules_with(const std::string& when) {
          "      - when: " + when + "\n";
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const DataError& e) {
-    return e.what();
-  }
-  return "no error";
+// The located message of the DataError a call throws.
+template <class F>
+std::string error_of(F&& f) {
+  return test::thrown<DataError>(f);
 }
 
 TEST(Hardening, ParenthesesDeeperThanTheLimitAreLocated) {

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "errors.h"
+#include "test_util.h"
 #include "files.h"
 #include "image.h"
 #include "png.h"
@@ -25,13 +26,10 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const DataError& e) {
-    return e.what();
-  }
-  return "no error";
+// The located message of the DataError a call throws.
+template <class F>
+std::string error_of(F&& f) {
+  return test::thrown<DataError>(f);
 }
 
 // A FIFO in the test's temporary folder, removed with this object.

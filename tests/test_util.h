@@ -3,9 +3,22 @@
 
 #include <gtest/gtest.h>
 
+#include <exception>
 #include <string>
 
 namespace afford::test {
+
+// The message of the E a call throws, or "" when it throws none (another
+// exception than E passes through and fails the test).
+template <class E = std::exception, class F>
+std::string thrown(F&& f) {
+  try {
+    f();
+  } catch (const E& e) {
+    return e.what();
+  }
+  return "";
+}
 
 // `text` with its one occurrence of `from` replaced by `to`. A `from` that
 // is missing or not unique fails the test: the mutation would be unclear.
