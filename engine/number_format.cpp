@@ -57,8 +57,11 @@ char* copy(char* p, const char* from, int count) {
 // |v| = digits * 10^(exponent - precision + 1), digits of `precision`
 // figures, when the rounding to them is unambiguous.
 bool significant_digits(double magnitude, int precision, uint64_t* digits, int* exponent) {
-  int e = static_cast<int>(std::floor(std::log10(magnitude)));
-  // log10 may be one off next to a power of ten: the scaled value says.
+  // The decimal exponent from the binary one (log10(2) = 0.30103): at most
+  // one too small, which the scaled value then says.
+  int binary_exponent = 0;
+  std::frexp(magnitude, &binary_exponent);  // magnitude in [2^(b-1), 2^b)
+  int e = static_cast<int>(std::floor((binary_exponent - 1) * 0.30102999566398120));
   for (int attempt = 0; attempt < 3; ++attempt) {
     const int k = precision - 1 - e;
     if (k < -kMaxExactPow10 || k > kMaxExactPow10) return false;
