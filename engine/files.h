@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +44,7 @@ class CheckedFile {
 
  private:
   std::string path_;
+  std::unique_ptr<char[]> buffer_;  // the file's buffer: freed after the file is closed
 };
 
 // Writes `text` to `path` (replacing it), checked to the last byte.

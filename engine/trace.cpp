@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "number_format.h"
+
 namespace afford {
 
 const char* TraceWriter::units() {
@@ -20,17 +22,15 @@ void TraceWriter::on_start(const Model&, const State&, const RuleSet&) {
 
 namespace {
 
-// std::to_chars formats as printf does ("%.6f" is fixed with precision 6,
-// "%.9g" general with precision 9), without the format string parsed and
-// the locale consulted every frame. Each appends a comma.
+// As printf's "%.6f" and "%.9g" (number_format.h). Each appends a comma.
 char* put_fixed6(char* p, char* end, double v) {
-  p = std::to_chars(p, end, v, std::chars_format::fixed, 6).ptr;
+  p = write_fixed(p, end, v, 6);
   *p++ = ',';
   return p;
 }
 
 char* put_general9(char* p, char* end, double v) {
-  p = std::to_chars(p, end, v, std::chars_format::general, 9).ptr;
+  p = write_general(p, end, v, 9);
   *p++ = ',';
   return p;
 }

@@ -23,8 +23,8 @@
 // (for inferred, the last node) and text its `when` as written.
 //
 // Both write into a FILE* they do not own and allocate nothing per frame;
-// the trace's numbers are formatted with std::to_chars, the same bytes as
-// printf's "%.6f" (t) and "%.9g" (the rest).
+// the trace's numbers are the same bytes as printf's "%.6f" (t) and "%.9g"
+// (the rest), written without printf (number_format.h).
 #pragma once
 
 #include <cstdio>

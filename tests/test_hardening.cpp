@@ -108,6 +108,17 @@ TEST(Hardening, AStrayCommaIsASyntaxErrorNotAHang) {
               HasSubstr("end.yaml:3:1: expected one YAML document per file, found a second document"));
 }
 
+// A file is parsed once where yaml-cpp can only end its document at the end
+// of the text; where the document could end sooner (a root mapping that is
+// indented, a directive line), the second document is still found.
+TEST(Hardening, ASecondDocumentIsFoundWhereTheFirstCouldEndEarly) {
+  EXPECT_THAT(error_of([] { load_yaml_string("  a: 1\nb: 2\n", "indented.yaml"); }),
+              HasSubstr("indented.yaml:2:1: expected one YAML document per file, found a second document"));
+  EXPECT_THAT(error_of([] { load_yaml_string("a: 1\n%TAG ! tag:x,2000:\nb: 2\n", "directive.yaml"); }),
+              HasSubstr("directive.yaml:3:1: expected one YAML document per file, found a second document"));
+  EXPECT_NO_THROW(load_yaml_string("a: 1\nb: [2,\n  3]\nc: |\n  ...\n", "one.yaml"));
+}
+
 TEST(Hardening, OnlyRegularFilesAreRead) {
   const std::string fifo = testing::TempDir() + "afford_fifo_" + std::to_string(getpid());
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);

@@ -431,8 +431,8 @@ TEST(Run, TraceHasTheHeaderAndOneRowPerFrame) {
   EXPECT_THAT(out.trace, HasSubstr("\n1.000000,"));
 }
 
-// The trace's rows come from std::to_chars: the same bytes as printf's
-// "%.6f" and "%.9g", for ordinary and extreme values alike.
+// The trace's rows are the same bytes as printf's "%.6f" and "%.9g", for
+// ordinary and extreme values alike.
 TEST(Run, TraceRowsAreTheBytesPrintfWouldWrite) {
   const std::vector<double> values = {0.0, -0.0, 1.0, -1.0, 0.1, 1.0 / 3, 2.0 / 3, 123456789.0, 1234567890123.0,
                                       1e-5, 1e-300, 5e-324, -2.5e-7, 1e15, 1e16, 1e308, -1.7976931348623157e308,
