@@ -200,6 +200,9 @@ TEST(GraspsShipped, LoadsWithPlausibleForces) {
       }
     }
   }
+  // Each description is whole: a plain ' #' would start a YAML comment
+  // and cut it at "Cutkosky 1989"; every one ends its sentence.
+  for (const GraspTypeSpec& t : g) EXPECT_TRUE(t.description.ends_with(".")) << t.name << ": " << t.description;
   // Pinches are far weaker than grips (Mathiowetz 1985).
   EXPECT_LT(g[static_cast<size_t>(index_of(g, "tip_pinch"))].max_force,
             g[static_cast<size_t>(index_of(g, "lateral_pinch"))].max_force);
