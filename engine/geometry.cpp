@@ -385,10 +385,11 @@ struct ContactQuery::Impl {
 
   // The distance between two placed shapes, their nearest points in
   // near_a and near_b; -1 when they overlap.
-  double distance(const Geometry& a, const Eigen::Isometry3d& pa, const Geometry& b, const Eigen::Isometry3d& pb) {
+  double distance(const Geometry& a, const Eigen::Isometry3d& pa, const Geometry& b, const Eigen::Isometry3d& pb,
+                  const Vector3d& start = Vector3d::Zero()) {
     if (a.spec().kind == ShapeKind::sphere) return sphere_distance(a, pa, b, pb, &near_a, &near_b);
     if (b.spec().kind == ShapeKind::sphere) return sphere_distance(b, pb, a, pa, &near_b, &near_a);
-    const GjkResult g = gjk_distance(a, pa, b, pb);
+    const GjkResult g = gjk_distance(a, pa, b, pb, start);
     if (g.overlap) return -1;
     near_a = g.on_a;
     near_b = g.on_b;
@@ -406,8 +407,9 @@ double ContactQuery::distance(const Geometry& a, const Eigen::Isometry3d& pose_a
 }
 
 double ContactQuery::distance(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
-                              const Eigen::Isometry3d& pose_b, Vector3d* near_a, Vector3d* near_b) {
-  const double d = impl_->distance(a, pose_a, b, pose_b);
+                              const Eigen::Isometry3d& pose_b, Vector3d* near_a, Vector3d* near_b,
+                              const Vector3d& start) {
+  const double d = impl_->distance(a, pose_a, b, pose_b, start);
   *near_a = impl_->near_a;
   *near_b = impl_->near_b;
   return std::max(0.0, d);

@@ -66,8 +66,11 @@ class ContactQuery {
   double distance(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
                   const Eigen::Isometry3d& pose_b);
   // The same, and when it is above 0 the nearest points (m, world) of each.
+  // `start`, for a pair without a closed form: a direction from a to b to
+  // begin the search from (the last answer for a pair that moved a little).
   double distance(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
-                  const Eigen::Isometry3d& pose_b, Eigen::Vector3d* near_a, Eigen::Vector3d* near_b);
+                  const Eigen::Isometry3d& pose_b, Eigen::Vector3d* near_a, Eigen::Vector3d* near_b,
+                  const Eigen::Vector3d& start = Eigen::Vector3d::Zero());
 
   // True when the shapes overlap or are closer than tolerance (m); then
   // `out` holds the deepest point (or the midpoint of the gap) and normal.

@@ -152,13 +152,14 @@ bool reduce(Simplex& s) {
 
 }  // namespace
 
-GjkResult gjk_distance(const Geometry& a, const Isometry3d& pose_a, const Geometry& b, const Isometry3d& pose_b) {
+GjkResult gjk_distance(const Geometry& a, const Isometry3d& pose_a, const Geometry& b, const Isometry3d& pose_b,
+                       const Vector3d& start) {
   GjkResult r;
   Simplex s;
-  // Start along the line between the origins (any direction would do).
-  Vector3d start = pose_b.translation() - pose_a.translation();
-  if (!(start.squaredNorm() > 0)) start = Vector3d::UnitX();
-  s.c[0] = corner(a, pose_a, b, pose_b, start);
+  // Any direction would do; the nearer the answer, the fewer iterations.
+  Vector3d first = start.squaredNorm() > 0 ? start : Vector3d(pose_b.translation() - pose_a.translation());
+  if (!(first.squaredNorm() > 0)) first = Vector3d::UnitX();
+  s.c[0] = corner(a, pose_a, b, pose_b, first);
   s.size = 1;
   s.weight[0] = 1;
   Vector3d v = s.c[0].w;

@@ -19,16 +19,20 @@ constexpr double kAngleBracket = 1e-12;
 struct MovingGap {
   double gap = std::numeric_limits<double>::infinity();  // m, 0 when touching
   double slope = 0;  // m/rad, d gap / d theta (opening widens the gap)
+  Eigen::Vector3d across = Eigen::Vector3d::Zero();  // from the part to the actee, where apart
 };
 
-MovingGap moving_gap(const Model& m, const Eigen::Isometry3d& actee_in_object, ContactQuery& query, double theta) {
+// `near`: the last answer, whose direction starts the distance queries.
+MovingGap moving_gap(const Model& m, const Eigen::Isometry3d& actee_in_object, ContactQuery& query, double theta,
+                     const MovingGap& near = {}) {
   MovingGap g;
   for (const ModelPart& part : m.parts) {
     if (part.arm != Arm::moving) continue;
     Eigen::Vector3d on_part, on_actee;
     const double d = query.distance(part.geometry, part_in_object(part, theta), m.actee(), actee_in_object, &on_part,
-                                    &on_actee);
+                                    &on_actee, near.across);
     if (d >= g.gap) continue;
+    g.across = d > 0 ? Eigen::Vector3d(on_actee - on_part) : Eigen::Vector3d::Zero();
     g.gap = d;
     // The part's nearest point turns about the hinge (z): it moves by
     // z x p per radian, and the gap changes by that along the line to
@@ -61,7 +65,7 @@ JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_obje
       const double newton = open - (1 - aim) * at_open.gap / at_open.slope;
       if (newton > closed && newton < open) next = newton;
     }
-    const MovingGap g = moving_gap(m, actee_in_object, query, next);
+    const MovingGap g = moving_gap(m, actee_in_object, query, next, at_open);
     overshot = !(g.gap > 0);
     if (overshot) {
       closed = next;
