@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 
 namespace afford {
 namespace {
@@ -12,8 +13,9 @@ using Eigen::Vector3d;
 
 // Closer than this to the origin, m, the simplex counts as touching it.
 constexpr double kTouching = 1e-15;
-// GJK gains a digit or more an iteration; this many means it is cycling on
-// round-off, and its last point is as near as doubles get.
+// On curved shapes GJK converges linearly (about 20 iterations to 1e-12 m
+// for a flat jaw on a nut); this many means it is cycling on round-off.
+// Stopping there without a separating plane counts as touching.
 constexpr int kMaxIterations = 64;
 
 // A corner of the Minkowski difference a - b, with the points it came from.

@@ -2,8 +2,8 @@
 // and Keerthi, 1988) on their support functions, with the closest point of
 // each simplex found from its Voronoi regions (Ericson, Real-Time Collision
 // Detection, 5.1.5 and 5.1.6). Ours rather than FCL's: it allocates nothing,
-// stops at a stated tolerance, and costs a few hundred instructions an
-// iteration where FCL's set-up alone cost thousands.
+// stops at a stated distance tolerance, starts from a direction the caller
+// knows (a warm start), and skips the traversal fcl::distance sets up.
 #pragma once
 
 #include <Eigen/Geometry>
