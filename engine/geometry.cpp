@@ -11,7 +11,6 @@
 #include <fcl/geometry/shape/ellipsoid.h>
 #include <fcl/geometry/shape/sphere.h>
 #include <fcl/narrowphase/collision.h>
-#include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_box.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_capsule.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_cylinder.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_sphere.h>
@@ -346,9 +345,16 @@ struct ContactQuery::Impl {
     Vector3d on_point = Vector3d::Zero();
     *on_b = Vector3d::Zero();
     switch (b.spec().kind) {
-      case ShapeKind::box:  // boxes and spheres need no fcl_offset (identity)
-        fcl::detail::sphereBoxDistance(point, at, static_cast<const fcl::Boxd&>(b.fcl()), pb, &d, &on_point, on_b);
-        return d;
+      case ShapeKind::box: {
+        // The point in the box's frame, clamped to it: the nearest point
+        // (FCL's sphereBoxDistance does the same with more pose products).
+        const Vector3d local = pb.linear().transpose() * (at.translation() - pb.translation());
+        const Vector3d half = 0.5 * b.spec().size;
+        const Vector3d clamped = local.cwiseMax(-half).cwiseMin(half);
+        if (clamped == local) return -1;  // inside
+        *on_b = pb * clamped;
+        return (local - clamped).norm();
+      }
       case ShapeKind::sphere:
         fcl::detail::sphereSphereDistance(point, at, static_cast<const fcl::Sphered&>(b.fcl()), pb, &d, &on_point,
                                           on_b);
