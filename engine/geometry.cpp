@@ -1,5 +1,7 @@
 #include "geometry.h"
 
+#include "gjk.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <fcl/geometry/shape/box.h>
@@ -9,11 +11,9 @@
 #include <fcl/geometry/shape/ellipsoid.h>
 #include <fcl/geometry/shape/sphere.h>
 #include <fcl/narrowphase/collision.h>
-#include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_box.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_capsule.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_cylinder.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_sphere.h>
-#include <fcl/narrowphase/distance.h>
 
 #include <algorithm>
 #include <array>
@@ -269,6 +269,39 @@ double Geometry::support(const Vector3d& d) const {
   return 0;
 }
 
+Vector3d Geometry::support_point(const Vector3d& d) const {
+  const double norm = d.norm();
+  const Vector3d u = norm > 0 ? Vector3d(d / norm) : Vector3d::UnitX();
+  const double end = 0.5 * spec_.length * (d.x() >= 0 ? 1 : -1);  // capsule and cylinder
+  switch (spec_.kind) {
+    case ShapeKind::sphere:
+      return spec_.radius * u;
+    case ShapeKind::box:
+      return 0.5 * Vector3d(d.x() >= 0 ? spec_.size.x() : -spec_.size.x(), d.y() >= 0 ? spec_.size.y() : -spec_.size.y(),
+                            d.z() >= 0 ? spec_.size.z() : -spec_.size.z());
+    case ShapeKind::capsule:
+      return Vector3d(end, 0, 0) + spec_.radius * u;
+    case ShapeKind::cylinder: {
+      const double across = std::hypot(d.y(), d.z());
+      if (!(across > 0)) return Vector3d(end, 0, 0);
+      return Vector3d(end, spec_.radius * d.y() / across, spec_.radius * d.z() / across);
+    }
+    case ShapeKind::ellipsoid: {
+      // x = diag(r) u' with u' = diag(r) d / |diag(r) d| (see support()).
+      const Vector3d scaled = spec_.radii.cwiseProduct(d);
+      const double len = scaled.norm();
+      return len > 0 ? Vector3d(spec_.radii.cwiseProduct(scaled) / len) : Vector3d::Zero();
+    }
+    case ShapeKind::convex: {
+      const Vector3d* best = &hull_vertices_.front();
+      for (const Vector3d& v : hull_vertices_)
+        if (v.dot(d) > best->dot(d)) best = &v;
+      return *best;
+    }
+  }
+  return Vector3d::Zero();
+}
+
 // ---------------------------------------------------------------- ContactQuery
 
 namespace {
@@ -277,30 +310,26 @@ constexpr double kTinyGap = 1e-9;
 // Contacts this close in depth, m, count as one face: their points are averaged.
 constexpr double kSameDepth = 1e-9;
 constexpr std::size_t kMaxContacts = 4;  // box-box faces give four corners
-constexpr double kGjkTolerance = 1e-8;
 }  // namespace
 
 struct ContactQuery::Impl {
-  // GJK via libccd (FCL's default): its penetration (MPR) gives sane normals
-  // and depths; FCL's own GJK/EPA ("indep") returned negative depths and
-  // wrong normals for convex pairs in 0.7.
+  // Separated shapes: a pair with a sphere is the distance from its centre,
+  // in closed form for a box, sphere, capsule or cylinder (FCL's, called
+  // directly: the traversal fcl::distance sets up around it cost twice the
+  // closed form itself); every other pair is our GJK (gjk.h), which
+  // allocates nothing and stops within a picometre.
   //
-  // GJK's stopping tolerance: at FCL's 1e-6 a capsule lying parallel to a
-  // box face came out 1.2 mm too far; 1e-8 gives nanometres for ~40% more time.
-  //
-  // Distances (separated shapes) go through FCL's own GJK: for every pair of
-  // our shapes it agrees with libccd within 0.3 um and, unlike libccd's
-  // path, allocates nothing (measured: 2 allocations per libccd query
-  // without a closed form). Overlaps report -1 either way.
-  fcl::DistanceRequestd plain_request{false, false, 0, 0, kGjkTolerance, fcl::GST_INDEP};
-  fcl::DistanceRequestd nearest_request{true, false, 0, 0, kGjkTolerance, fcl::GST_INDEP};
-  fcl::DistanceResultd distance_result;
+  // Overlaps go to FCL's collision via libccd (its default): its
+  // penetration (MPR) gives sane normals and depths; FCL's own GJK/EPA
+  // ("indep") returned negative depths and wrong normals for convex pairs
+  // in 0.7.
   fcl::CollisionRequestd collision_request{kMaxContacts, true};
   fcl::CollisionResultd collision_result;
-  // A sphere's centre as a shape of its own: FCL answers point-box,
-  // point-sphere, point-capsule and point-cylinder distances in closed form
-  // and, unlike its GJK path, without allocating.
+  // A sphere's centre as a shape of its own, for FCL's closed forms and GJK.
   fcl::Sphered point{0.0};
+  Geometry point_geometry = Geometry::compile(ShapeSpec{});  // a sphere of radius 0
+  // The nearest points of the last distance() (world, m).
+  Vector3d near_a = Vector3d::Zero(), near_b = Vector3d::Zero();
 
   Impl() {
     // The contacts vector is private: fill and clear it once to keep capacity.
@@ -308,20 +337,24 @@ struct ContactQuery::Impl {
     collision_result.clear();
   }
 
-  // The distance from a point (at) to b and b's nearest point. For a box,
-  // sphere, capsule or cylinder this calls the closed form that
-  // fcl::distance ends in (GJKSolver_indep's shape pairs) directly: the same
-  // numbers, without the traversal set up around it, which cost twice the
-  // closed form itself (about 900 instructions a fingertip and part).
+  // The distance from a point (at) to b and b's nearest point; -1 when the
+  // point is inside b (as in FCL's closed forms).
   double point_distance(const Eigen::Isometry3d& at, const Geometry& b, const Eigen::Isometry3d& pb,
                         Vector3d* on_b) {
-    double d = -1;  // as in FCL's traversal: an overlap leaves -1, the points zero
+    double d = -1;
     Vector3d on_point = Vector3d::Zero();
     *on_b = Vector3d::Zero();
     switch (b.spec().kind) {
-      case ShapeKind::box:  // boxes and spheres need no fcl_offset (identity)
-        fcl::detail::sphereBoxDistance(point, at, static_cast<const fcl::Boxd&>(b.fcl()), pb, &d, &on_point, on_b);
-        return d;
+      case ShapeKind::box: {
+        // The point in the box's frame, clamped to it: the nearest point
+        // (FCL's sphereBoxDistance does the same with more pose products).
+        const Vector3d local = pb.linear().transpose() * (at.translation() - pb.translation());
+        const Vector3d half = 0.5 * b.spec().size;
+        const Vector3d clamped = local.cwiseMax(-half).cwiseMin(half);
+        if (clamped == local) return -1;  // inside
+        *on_b = pb * clamped;
+        return (local - clamped).norm();
+      }
       case ShapeKind::sphere:
         fcl::detail::sphereSphereDistance(point, at, static_cast<const fcl::Sphered&>(b.fcl()), pb, &d, &on_point,
                                           on_b);
@@ -334,19 +367,39 @@ struct ContactQuery::Impl {
         fcl::detail::sphereCylinderDistance(point, at, static_cast<const fcl::Cylinderd&>(b.fcl()),
                                             pb * b.fcl_offset(), &d, &on_point, on_b);
         return d;
-      default:
-        distance_result.clear();
-        d = fcl::distance(&point, at, &b.fcl(), pb * b.fcl_offset(), nearest_request, distance_result);
-        *on_b = distance_result.nearest_points[1];
-        return d;
+      default: {
+        const GjkResult g = gjk_distance(point_geometry, at, b, pb);
+        if (g.overlap) return -1;
+        *on_b = g.on_b;
+        return g.distance;
+      }
     }
   }
 
-  double distance(const Geometry& a, const Eigen::Isometry3d& pa, const Geometry& b,
-                  const Eigen::Isometry3d& pb, const fcl::DistanceRequestd& request) {
-    distance_result.clear();
-    return fcl::distance(&a.fcl(), pa * a.fcl_offset(), &b.fcl(), pb * b.fcl_offset(), request,
-                         distance_result);
+  // A sphere (s) and another shape: the distance from the centre less the radius.
+  double sphere_distance(const Geometry& s, const Eigen::Isometry3d& ps, const Geometry& other,
+                         const Eigen::Isometry3d& po, Vector3d* on_s, Vector3d* on_other) {
+    const Vector3d centre = ps.translation();
+    Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
+    at.translation() = centre;
+    const double from_centre = point_distance(at, other, po, on_other);
+    const double radius = s.spec().radius;
+    if (!(from_centre > radius)) return -1;
+    *on_s = centre + (radius / from_centre) * (*on_other - centre);
+    return from_centre - radius;
+  }
+
+  // The distance between two placed shapes, their nearest points in
+  // near_a and near_b; -1 when they overlap.
+  double distance(const Geometry& a, const Eigen::Isometry3d& pa, const Geometry& b, const Eigen::Isometry3d& pb,
+                  const Vector3d& start = Vector3d::Zero()) {
+    if (a.spec().kind == ShapeKind::sphere) return sphere_distance(a, pa, b, pb, &near_a, &near_b);
+    if (b.spec().kind == ShapeKind::sphere) return sphere_distance(b, pb, a, pa, &near_b, &near_a);
+    const GjkResult g = gjk_distance(a, pa, b, pb, start);
+    if (g.overlap) return -1;
+    near_a = g.on_a;
+    near_b = g.on_b;
+    return g.distance;
   }
 };
 
@@ -355,8 +408,17 @@ ContactQuery::~ContactQuery() = default;
 
 double ContactQuery::distance(const Geometry& a, const Eigen::Isometry3d& pose_a,
                               const Geometry& b, const Eigen::Isometry3d& pose_b) {
-  // Unsigned: FCL reports an overlap as a negative value (mostly -1).
-  return std::max(0.0, impl_->distance(a, pose_a, b, pose_b, impl_->plain_request));
+  // Unsigned: an overlap is reported as -1 inside.
+  return std::max(0.0, impl_->distance(a, pose_a, b, pose_b));
+}
+
+double ContactQuery::distance(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
+                              const Eigen::Isometry3d& pose_b, Vector3d* near_a, Vector3d* near_b,
+                              const Vector3d& start) {
+  const double d = impl_->distance(a, pose_a, b, pose_b, start);
+  *near_a = impl_->near_a;
+  *near_b = impl_->near_b;
+  return std::max(0.0, d);
 }
 
 bool ContactQuery::contact(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
@@ -386,10 +448,10 @@ bool ContactQuery::contact(const Geometry& a, const Eigen::Isometry3d& pose_a, c
     out->distance = -a.spec().radius;
     return true;
   }
-  const double gap = q.distance(a, pose_a, b, pose_b, q.nearest_request);
+  const double gap = q.distance(a, pose_a, b, pose_b);
   if (gap > tolerance) return false;
-  const Vector3d& near_a = q.distance_result.nearest_points[0];
-  const Vector3d& near_b = q.distance_result.nearest_points[1];
+  const Vector3d& near_a = q.near_a;
+  const Vector3d& near_b = q.near_b;
   if (gap > kTinyGap) {
     out->point = 0.5 * (near_a + near_b);
     out->normal = (near_b - near_a).normalized();

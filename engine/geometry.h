@@ -31,6 +31,9 @@ class Geometry {
   const Eigen::AlignedBox3d& local_box() const { return local_box_; }
   // max over the shape of x . direction, local frame, m (direction unit).
   double support(const Eigen::Vector3d& direction) const;
+  // A point of the shape where that maximum is reached, local frame, m
+  // (direction of any length but zero): what GJK asks of a shape.
+  Eigen::Vector3d support_point(const Eigen::Vector3d& direction) const;
   const ShapeSpec& spec() const { return spec_; }
   double volume() const;              // m^3
   Eigen::Vector3d centroid() const;   // m, of the volume, local frame
@@ -62,6 +65,12 @@ class ContactQuery {
   // Separation distance, m; 0 when the shapes touch or overlap.
   double distance(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
                   const Eigen::Isometry3d& pose_b);
+  // The same, and when it is above 0 the nearest points (m, world) of each.
+  // `start`, for a pair without a closed form: a direction from a to b to
+  // begin the search from (the last answer for a pair that moved a little).
+  double distance(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
+                  const Eigen::Isometry3d& pose_b, Eigen::Vector3d* near_a, Eigen::Vector3d* near_b,
+                  const Eigen::Vector3d& start = Eigen::Vector3d::Zero());
 
   // True when the shapes overlap or are closer than tolerance (m); then
   // `out` holds the deepest point (or the midpoint of the gap) and normal.

@@ -1,5 +1,5 @@
-// Where the jaws meet the actee: found once per placement by bisection on
-// the opening angle with FCL distance queries, so that a frame needs none.
+// Where the jaws meet the actee: found once per placement by a search on
+// the opening angle with distance queries, so that a frame needs none.
 #include "stages.h"
 
 namespace afford {
@@ -10,16 +10,36 @@ Eigen::Isometry3d part_in_object(const ModelPart& part, double theta_rad) {
 
 namespace {
 
-// Distance from the actee to the nearest moving part at angle theta, m.
-double moving_gap(const Model& m, const Eigen::Isometry3d& actee_in_object, ContactQuery& query,
-                  double theta) {
-  double gap = std::numeric_limits<double>::infinity();
+// Where the search for the contact angle stops: the moving jaw is this
+// close to the actee (m), or the angle is bracketed this tightly (rad).
+constexpr double kContactGap = 1e-11;
+constexpr double kAngleBracket = 1e-12;
+
+// The actee and the moving part nearest it at angle theta.
+struct MovingGap {
+  double gap = std::numeric_limits<double>::infinity();  // m, 0 when touching
+  double slope = 0;  // m/rad, d gap / d theta (opening widens the gap)
+  Eigen::Vector3d across = Eigen::Vector3d::Zero();  // from the part to the actee, where apart
+};
+
+// `near`: the last answer, whose direction starts the distance queries.
+MovingGap moving_gap(const Model& m, const Eigen::Isometry3d& actee_in_object, ContactQuery& query, double theta,
+                     const MovingGap& near = {}) {
+  MovingGap g;
   for (const ModelPart& part : m.parts) {
     if (part.arm != Arm::moving) continue;
-    gap = std::min(gap, query.distance(part.geometry, part_in_object(part, theta), m.actee(),
-                                       actee_in_object));
+    Eigen::Vector3d on_part, on_actee;
+    const double d = query.distance(part.geometry, part_in_object(part, theta), m.actee(), actee_in_object, &on_part,
+                                    &on_actee, near.across);
+    if (d >= g.gap) continue;
+    g.across = d > 0 ? Eigen::Vector3d(on_actee - on_part) : Eigen::Vector3d::Zero();
+    g.gap = d;
+    // The part's nearest point turns about the hinge (z): it moves by
+    // z x p per radian, and the gap changes by that along the line to
+    // the actee (the nearest points stay nearest to first order).
+    g.slope = d > 0 ? -(on_actee - on_part).dot(Eigen::Vector3d::UnitZ().cross(on_part)) / d : 0;
   }
-  return gap;
+  return g;
 }
 
 }  // namespace
@@ -27,13 +47,33 @@ double moving_gap(const Model& m, const Eigen::Isometry3d& actee_in_object, Cont
 JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_object,
                           ContactQuery& query, double* theta_c, std::vector<JawContact>* contacts) {
   // Fully open and already touching: it does not fit in the jaws.
-  if (moving_gap(m, actee_in_object, query, m.theta_max) <= 0) return JawFit::too_large;
+  MovingGap at_open = moving_gap(m, actee_in_object, query, m.theta_max);
+  if (at_open.gap <= 0) return JawFit::too_large;
   // Fully closed and still apart: the moving jaw never reaches it.
-  if (moving_gap(m, actee_in_object, query, m.theta_min) > 0) return JawFit::out_of_reach;
+  if (moving_gap(m, actee_in_object, query, m.theta_min).gap > 0) return JawFit::out_of_reach;
+  // Newton's method from the open side, which the gap's slope makes exact
+  // to second order, aimed a little short (at a fraction `aim` of the gap)
+  // so that the curvature does not carry it into the actee; where it
+  // would leave the bracket, or after it did step into the actee (and
+  // then aiming shorter), a bisection.
   double open = m.theta_max, closed = m.theta_min;
-  for (int i = 0; i < 60 && open - closed > 1e-12; ++i) {
-    const double mid = 0.5 * (open + closed);
-    (moving_gap(m, actee_in_object, query, mid) > 0 ? open : closed) = mid;
+  double aim = 1.0 / 64;
+  bool overshot = false;
+  for (int i = 0; i < 200 && open - closed > kAngleBracket && at_open.gap > kContactGap; ++i) {
+    double next = 0.5 * (open + closed);
+    if (!overshot && at_open.slope > 0) {
+      const double newton = open - (1 - aim) * at_open.gap / at_open.slope;
+      if (newton > closed && newton < open) next = newton;
+    }
+    const MovingGap g = moving_gap(m, actee_in_object, query, next, at_open);
+    overshot = !(g.gap > 0);
+    if (overshot) {
+      closed = next;
+      aim = std::min(0.5, 4 * aim);
+    } else {
+      open = next;
+      at_open = g;
+    }
   }
   // The moving jaw presses the actee onto the fixed jaw; an actee not resting
   // on the fixed arm would be pushed away rather than gripped.
