@@ -13,6 +13,7 @@ constexpr double kMatched = 1.3;        // a held-out RMSE within this factor of
 constexpr double kRealMargin = 0.05;    // an effect must cut the held-out RMSE by this fraction
 constexpr double kAiccMargin = 10;      // and the training AICc by this much
 constexpr double kSeparated = 3;        // a runner-up this many standard errors worse is told apart
+constexpr double kNearlyAsFar = 0.9;    // or one that cuts the mean squared error by less than this share of the best's cut
 constexpr size_t kBatches = 40;         // batch means for that standard error
 constexpr int kMaxEffects = 3;
 constexpr int kLags = 20;               // Ljung-Box
@@ -38,6 +39,7 @@ std::vector<Replay> halves(const Replay& r) {
     h.measured = cut(r.measured);
     h.nominal = cut(r.nominal);
     h.deflection = cut(r.deflection);
+    h.slope = cut(r.slope);
     if (!r.actee_measured.empty()) {
       h.actee_measured = cut(r.actee_measured);
       h.actee_nominal = cut(r.actee_nominal);
@@ -84,23 +86,23 @@ std::vector<Replay> replay_with_input_noise(const Model& model, Measurement m, c
 }
 
 // How much of the motion's noise a fitted set passes into its prediction
-// (N, RMS): the model predicts from the measured angle, its rate and its
-// acceleration, and differentiating twice makes an arm's inertia pass the
-// angle's noise on many times over. The two predictions, from the motion
+// (N, RMS, the samples weighed as the fits weigh them): the model predicts
+// from the measured angle, its rate and its acceleration, and
+// differentiating twice makes an arm's inertia pass the angle's noise on
+// many times over. The two predictions, from the motion
 // as measured and with as much noise again, differ by the noise's share.
 double propagated_noise(const Fitter& measured, const Fitter& noisier, const std::vector<Replay>& a,
                         const std::vector<Replay>& b, const SetFit& set) {
-  double sq = 0;
-  size_t n = 0;
+  double sq = 0, weights = 0;
   for (size_t i = 0; i < a.size(); ++i) {
     const std::vector<double> ea = measured.residual(set, i), eb = noisier.residual(set, i);
     for (size_t s = 0; s < ea.size(); ++s) {
       if (!a[i].fitted[s] || !b[i].fitted[s]) continue;
-      sq += (ea[s] - eb[s]) * (ea[s] - eb[s]);
-      ++n;
+      sq += a[i].weight[s] * (ea[s] - eb[s]) * (ea[s] - eb[s]);
+      weights += a[i].weight[s];
     }
   }
-  return n > 0 ? std::sqrt(sq / static_cast<double>(n)) : 0.0;
+  return weights > 0 ? std::sqrt(sq / weights) : 0.0;
 }
 
 // 99 % point of chi-square with k degrees of freedom (Wilson-Hilferty).
@@ -290,6 +292,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // (a single trace is cut in halves, each judged by the other); the
   // parameters reported come from a fit on every trace.
   if (split) replays = halves(replays.front());
+  d.noise = noise_of(replays);
+  weigh(replays, d.noise);
   const size_t folds = std::min<size_t>(replays.size(), kFolds);
   std::vector<size_t> all(replays.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = i;
@@ -302,9 +306,9 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   }
   for (const Replay& r : replays) d.judged_on.push_back(r.file);
   d.folds = folds;
-  d.noise = noise_of(replays);
   const Fitter fitter(model, replays, all, {});
-  const std::vector<Replay> noisier = replay_with_input_noise(model, m, x_noise, split);
+  std::vector<Replay> noisier = replay_with_input_noise(model, m, x_noise, split);
+  for (size_t i = 0; i < noisier.size(); ++i) noisier[i].weight = replays[i].weight;
   const Fitter noisier_fitter(model, noisier, all, {});
   // What the model cannot match better than: the effort's noise and the
   // motion's, passed through the set's prediction.
@@ -323,22 +327,24 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   auto score = [&](const std::vector<EffectKind>& set) {
     Scored out{fitter.fit(set), {}};
     SetFit& f = out.fit;
-    double sq = 0;
+    double sq = 0, weights = 0;
     size_t n = 0;
     for (size_t k = 0; k < fold_fitters.size(); ++k) {
       const SetFit g = fold_fitters[k].fit(set);
       f.valid = f.valid && g.valid;
-      sq += g.rmse_test * g.rmse_test * static_cast<double>(g.n_test);
+      sq += g.rmse_test * g.rmse_test * g.w_test;
+      weights += g.w_test;
       n += g.n_test;
       for (size_t i : judged[k]) {
         const std::vector<double> e = fold_fitters[k].residual(g, i);
         for (size_t s = 0; s < e.size(); ++s) {
-          if (replays[i].fitted[s]) out.sq.push_back(e[s] * e[s]);
+          if (replays[i].fitted[s]) out.sq.push_back(replays[i].weight[s] * e[s] * e[s]);
         }
       }
     }
-    f.rmse_test = n > 0 ? std::sqrt(sq / static_cast<double>(n)) : 0.0;
+    f.rmse_test = weights > 0 ? std::sqrt(sq / weights) : 0.0;
     f.n_test = n;
+    f.w_test = weights;
     return out;
   };
 
@@ -370,11 +376,19 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
         d.steps.push_back(line);
         break;
       }
-      // As good: a runner-up the held-out samples do not tell apart from
-      // the best (not significantly worse, sample by sample).
+      // As good: a runner-up that cuts the held-out error nearly as far as
+      // the best and that the held-out samples do not tell apart from it
+      // (not significantly worse, sample by sample). The first alone is not
+      // enough where the best's cut lies in a few samples (an actee's
+      // contact): batch means that are mostly zero make a weak test.
+      const double cut = current.rmse_test * current.rmse_test - best.rmse_test * best.rmse_test;  // N^2
       std::vector<EffectKind> alike = {tried.front().second};
       for (size_t j = 1; j < tried.size(); ++j) {
-        if (paired_t(tried.front().first.sq, tried[j].first.sq) < kSeparated) alike.push_back(tried[j].second);
+        const SetFit& other = tried[j].first.fit;
+        const double other_cut = current.rmse_test * current.rmse_test - other.rmse_test * other.rmse_test;
+        if (other_cut >= kNearlyAsFar * cut && paired_t(tried.front().first.sq, tried[j].first.sq) < kSeparated) {
+          alike.push_back(tried[j].second);
+        }
       }
       chosen.push_back(tried.front().second);
       std::snprintf(line, sizeof line, "+ %s: held-out RMSE %.4g N", manifest_of(tried.front().second).name, best.rmse_test);
@@ -397,11 +411,18 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   d.rmse_after = current.rmse_test;
   d.shrink = d.rmse_before > 0 ? 1 - d.rmse_after / d.rmse_before : 0.0;
 
-  // Residuals of every trace, before and after.
+  // Residuals of every trace, before and after, each sample's in units of
+  // the effort sensor's noise (times the square root of its weight), so
+  // that the tests of structure and the phases' shares see the samples as
+  // the fits weigh them.
   std::vector<std::vector<double>> before, after;
   for (size_t i = 0; i < replays.size(); ++i) {
     before.push_back(fitter.residual(nominal, i));
     after.push_back(fitter.residual(current, i));
+    for (size_t s = 0; s < replays[i].t.size(); ++s) {
+      before.back()[s] *= std::sqrt(replays[i].weight[s]);
+      after.back()[s] *= std::sqrt(replays[i].weight[s]);
+    }
   }
   d.residual = whiteness(replays, after, all);
   d.rig = m.rig;
@@ -427,19 +448,18 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
         pt.effect = k;
       }
     }
-    double sq_nominal = 0, sq_alone = 0;
-    size_t n = 0;
+    double sq_nominal = 0, sq_alone = 0, weights = 0;
     for (size_t i = 0; i < replays.size(); ++i) {
       const Fitter own(model, replays, {i}, {i});
       const SetFit a = own.fit({}), b = own.fit({pt.effect});
-      sq_nominal += a.rmse_test * a.rmse_test * static_cast<double>(a.n_test);
-      sq_alone += b.rmse_test * b.rmse_test * static_cast<double>(b.n_test);
-      n += b.n_test;
+      sq_nominal += a.rmse_test * a.rmse_test * a.w_test;
+      sq_alone += b.rmse_test * b.rmse_test * b.w_test;
+      weights += b.w_test;
       pt.first_parameter.push_back(b.effects.empty() ? 0.0 : b.effects.front().value[0]);
     }
-    pt.computed = n > 0;
-    pt.rmse_nominal = n > 0 ? std::sqrt(sq_nominal / static_cast<double>(n)) : 0.0;
-    pt.rmse_alone = n > 0 ? std::sqrt(sq_alone / static_cast<double>(n)) : 0.0;
+    pt.computed = weights > 0;
+    pt.rmse_nominal = weights > 0 ? std::sqrt(sq_nominal / weights) : 0.0;
+    pt.rmse_alone = weights > 0 ? std::sqrt(sq_alone / weights) : 0.0;
   }
 
   // By force: what the effort makes of the angle and the actee, nominal

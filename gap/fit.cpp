@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "terms.h"
 
@@ -12,15 +13,9 @@ namespace {
 
 constexpr double kMaxDelay = 0.1;                // s, the longest sensor delay searched
 constexpr double kMinExponent = 0.5, kMaxExponent = 4.0;  // the actee's power laws searched
+constexpr int kMaxRounds = 5;   // of the alternating search for a delay and an exponent together
 
 bool is_linear(EffectKind k) { return k != EffectKind::sensor_latency && k != EffectKind::actee_compliance; }
-
-std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay) {
-  if (delay == 0) return y;
-  std::vector<double> out(y.size());
-  for (size_t i = 0; i < y.size(); ++i) out[i] = value_at(t, y, t[i] - delay);
-  return out;
-}
 
 // The minimum of f on [lo, hi]: a grid of `steps`, then golden sections
 // around the best point. Deterministic.
@@ -117,7 +112,16 @@ Fitter::Fitter(const Model& model, const std::vector<Replay>& replays, std::vect
       }
     }
     phi_.push_back(std::move(phi));
-    weight_.push_back(std::move(weight));
+    arm_weight_.push_back(std::move(weight));
+    own_actee_.push_back(model.has_actee ? actee_term(model, r, actee_, model.actee_exponent, model.actee_reference)
+                                         : std::vector<double>{});
+    std::vector<size_t> fitted, in_contact;
+    for (size_t s = 0; s < r.fitted.size(); ++s) {
+      if (r.fitted[s]) fitted.push_back(s);
+      if (r.fitted[s] && r.deflection[s] > 0) in_contact.push_back(s);
+    }
+    fitted_.push_back(std::move(fitted));
+    contact_fitted_.push_back(std::move(in_contact));
   }
 }
 
@@ -143,61 +147,131 @@ void Fitter::columns(size_t i, const std::vector<EffectKind>& linear, const Nonl
   cols->clear();
   for (EffectKind k : linear) {
     cols->push_back(phi_[i][static_cast<size_t>(k)]);
-    if (k == EffectKind::gravity && !weight_[i].empty()) {
-      for (size_t j = 0; j < base->size(); ++j) (*base)[j] += weight_[i][j];
+    if (k == EffectKind::gravity && !arm_weight_[i].empty()) {
+      for (size_t j = 0; j < base->size(); ++j) (*base)[j] += arm_weight_[i][j];
     }
   }
   if (nl.exponent > 0) {
-    const std::vector<double> own = actee_term(model_, r, actee_, model_.actee_exponent, model_.actee_reference);
+    const std::vector<double>& own = own_actee_[i];
     for (size_t j = 0; j < base->size(); ++j) (*base)[j] -= own[j];
     cols->push_back(actee_term(model_, r, actee_, nl.exponent, 1.0));  // k * delta^n: its coefficient is r^(1-n)
   }
-  *base = delayed(r.t, *base, nl.delay);
-  for (auto& c : *cols) c = delayed(r.t, c, nl.delay);
+  if (nl.delay != 0) {
+    *base = delayed(r.t, *base, nl.delay);
+    for (auto& c : *cols) c = delayed(r.t, c, nl.delay);
+  }
   for (double& v : *base) v *= r.to_newtons;
   for (auto& c : *cols) {
     for (double& v : c) v *= r.to_newtons;
   }
 }
 
-double Fitter::solve(const std::vector<size_t>& on, const std::vector<EffectKind>& linear, const Nonlinear& nl,
-                     std::vector<double>* coef, std::vector<double>* sigma, size_t* n) const {
-  const size_t k = linear.size() + (nl.exponent > 0 ? 1 : 0);
-  Eigen::MatrixXd xtx = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k));
-  Eigen::VectorXd xty = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
-  double yty = 0;
-  size_t count = 0;
-  std::vector<double> base;
-  std::vector<std::vector<double>> cols;
-  Eigen::VectorXd row(static_cast<Eigen::Index>(k));
+Fitter::Sums Fitter::accumulate(const std::vector<size_t>& on, const std::vector<EffectKind>& linear,
+                                const Nonlinear& nl, bool power_law_column) const {
+  const size_t k = linear.size() + (power_law_column && nl.exponent > 0 ? 1 : 0);
+  Sums out;
+  out.xtx = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k));
+  out.xty = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
   // The rate and the acceleration are differentiated from a noisy angle:
   // their noise inflates their columns' sums of squares and so shrinks
   // what least squares gives their effects (damping, inertia: errors in
   // the variables). Its known variance is taken off the diagonal
   // (bias-compensated least squares).
-  Eigen::VectorXd inflation = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
+  out.inflation = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
+  std::vector<double> base;
+  std::vector<std::vector<double>> cols;
+  std::vector<double> y, wy;  // N, the measured signal less the base at the fitted samples, and times its weight
   for (size_t i : on) {
     columns(i, linear, nl, &base, &cols);
+    if (!power_law_column && nl.exponent > 0) cols.pop_back();  // its sums are added by add_power_law
     const Replay& r = replays_[i];
-    Eigen::VectorXd per_sample = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
+    const std::vector<size_t>& fitted = fitted_[i];
+    const std::vector<double>& w = r.weight;
     for (size_t c = 0; c < linear.size(); ++c) {
       const double sd = linear[c] == EffectKind::arm_inertia     ? r.accel_noise
                         : linear[c] == EffectKind::viscous_damping ? r.rate_noise
                                                                    : 0.0;
-      per_sample[static_cast<Eigen::Index>(c)] = sd * r.to_newtons * sd * r.to_newtons;
+      const double per_sample = sd * r.to_newtons * sd * r.to_newtons;
+      double& sum = out.inflation[static_cast<Eigen::Index>(c)];
+      for (size_t s : fitted) sum += w[s] * per_sample;
     }
-    for (size_t s = 0; s < base.size(); ++s) {
-      if (!r.fitted[s]) continue;
-      inflation += per_sample;
-      const double y = r.measured[s] * r.to_newtons - base[s];
-      for (size_t c = 0; c < k; ++c) row[static_cast<Eigen::Index>(c)] = cols[c][s];
-      xtx.noalias() += row * row.transpose();
-      xty += row * y;
-      yty += y * y;
-      ++count;
+    // The normal equations' sums, each added up sample after sample in the
+    // order of the traces.
+    y.resize(fitted.size());
+    wy.resize(fitted.size());
+    for (size_t j = 0; j < fitted.size(); ++j) {
+      y[j] = r.measured[fitted[j]] * r.to_newtons - base[fitted[j]];
+      wy[j] = w[fitted[j]] * y[j];
+    }
+    for (size_t a = 0; a < k; ++a) {
+      const std::vector<double>& ca = cols[a];
+      for (size_t b = 0; b <= a; ++b) {
+        const std::vector<double>& cb = cols[b];
+        double& sum = out.xtx(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+        for (size_t s : fitted) sum += w[s] * ca[s] * cb[s];
+      }
+      double& sum = out.xty[static_cast<Eigen::Index>(a)];
+      for (size_t j = 0; j < fitted.size(); ++j) sum += ca[fitted[j]] * wy[j];
+    }
+    for (size_t j = 0; j < fitted.size(); ++j) {
+      out.yty += wy[j] * y[j];
+      out.weights += w[fitted[j]];
+    }
+    out.count += fitted.size();
+  }
+  return out;
+}
+
+Fitter::Sums Fitter::add_power_law(const Sums& linear_sums, const std::vector<size_t>& on,
+                                   const std::vector<EffectKind>& linear, double exponent) const {
+  // The power law's column is zero off the actee: its sums run over the
+  // fitted samples in contact only, which adds up to the same as over all.
+  const auto k = static_cast<Eigen::Index>(linear.size());
+  Sums out = linear_sums;
+  out.xtx.conservativeResize(k + 1, k + 1);
+  out.xtx.row(k).setZero();
+  out.xtx.col(k).setZero();
+  out.xty.conservativeResize(k + 1);
+  out.xty[k] = 0;
+  out.inflation.conservativeResize(k + 1);
+  out.inflation[k] = 0;
+  for (size_t i : on) {
+    const Replay& r = replays_[i];
+    const std::vector<double> law = actee_term(model_, r, actee_, exponent, 1.0);
+    const std::vector<double>& own = own_actee_[i];
+    for (size_t s : contact_fitted_[i]) {
+      // As columns() makes them: the base without the actee's own law.
+      double base = r.nominal[s];
+      for (EffectKind e : linear) {
+        if (e == EffectKind::gravity && !arm_weight_[i].empty()) base += arm_weight_[i][s];
+      }
+      base -= own[s];
+      base *= r.to_newtons;
+      const double y = r.measured[s] * r.to_newtons - base, wy = r.weight[s] * y;
+      const double ca = law[s] * r.to_newtons;
+      for (Eigen::Index b = 0; b < k; ++b) {
+        out.xtx(k, b) += r.weight[s] * ca * (phi_[i][static_cast<size_t>(linear[static_cast<size_t>(b)])][s] * r.to_newtons);
+      }
+      out.xtx(k, k) += r.weight[s] * ca * ca;
+      out.xty[k] += ca * wy;
     }
   }
+  return out;
+}
+
+double Fitter::solve(const Sums& sums, std::vector<double>* coef, std::vector<double>* sigma, size_t* n,
+                     double* wsum) const {
+  const auto k = static_cast<size_t>(sums.xty.size());
+  Eigen::MatrixXd xtx = sums.xtx;
+  for (Eigen::Index a = 0; a < xtx.rows(); ++a) {
+    for (Eigen::Index b = 0; b < a; ++b) xtx(b, a) = xtx(a, b);
+  }
+  const Eigen::VectorXd& xty = sums.xty;
+  const Eigen::VectorXd& inflation = sums.inflation;
+  const double yty = sums.yty;
+  const size_t count = sums.count;
   *n = count;
+  *wsum = sums.weights;
   coef->assign(k, 0.0);
   sigma->assign(k, 0.0);
   if (k == 0) return yty;
@@ -226,8 +300,8 @@ double Fitter::solve(const std::vector<size_t>& on, const std::vector<EffectKind
 }
 
 double Fitter::rss(const std::vector<size_t>& on, const std::vector<EffectKind>& linear, const Nonlinear& nl,
-                   const std::vector<double>& coef, size_t* n) const {
-  double sum = 0;
+                   const std::vector<double>& coef, size_t* n, double* wsum) const {
+  double sum = 0, weights = 0;
   size_t count = 0;
   std::vector<double> base;
   std::vector<std::vector<double>> cols;
@@ -239,11 +313,13 @@ double Fitter::rss(const std::vector<size_t>& on, const std::vector<EffectKind>&
       double p = base[s];
       for (size_t c = 0; c < cols.size(); ++c) p += coef[c] * cols[c][s];
       const double e = r.measured[s] * r.to_newtons - p;
-      sum += e * e;
+      sum += r.weight[s] * e * e;
+      weights += r.weight[s];
       ++count;
     }
   }
   *n = count;
+  *wsum = weights;
   return sum;
 }
 
@@ -257,8 +333,18 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set) const {
   }
   std::vector<double> coef, sigma;
   size_t n = 0;
+  double w = 0;
   // The training error for given nonlinear parameters, linear ones solved.
-  auto train_rss = [&](const Nonlinear& nl) { return solve(train_, linear, nl, &coef, &sigma, &n); };
+  // The linear columns' sums while the power law's exponent is searched
+  // without a delay: they do not change with it.
+  std::optional<Sums> linear_sums;
+  auto train_rss = [&](const Nonlinear& nl) {
+    if (nl.exponent > 0 && nl.delay == 0) {
+      if (!linear_sums) linear_sums = accumulate(train_, linear, nl, false);
+      return solve(add_power_law(*linear_sums, train_, linear, nl.exponent), &coef, &sigma, &n, &w);
+    }
+    return solve(accumulate(train_, linear, nl, true), &coef, &sigma, &n, &w);
+  };
   Nonlinear best;
   auto best_exponent = [&](double delay) {
     return minimise([&](double e) { return train_rss(Nonlinear{delay, e}); }, kMinExponent, kMaxExponent, 35);
@@ -267,10 +353,13 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set) const {
     return minimise([&](double d) { return train_rss(Nonlinear{d, exponent}); }, 0.0, kMaxDelay, 50);
   };
   if (compliance) best.exponent = best_exponent(0.0);
-  // Both at once: a few rounds of one, then the other.
-  for (int round = 0; round < (latency && compliance ? 3 : 1); ++round) {
+  // Both at once: one, then the other, until neither moves (they trade
+  // off: a later effort reads like a stiffer actee while it is loaded).
+  for (int round = 0; round < (latency && compliance ? kMaxRounds : 1); ++round) {
+    const Nonlinear was = best;
     if (latency) best.delay = best_delay(best.exponent);
     if (compliance && latency) best.exponent = best_exponent(best.delay);
+    if (std::abs(best.delay - was.delay) < 1e-6 && std::abs(best.exponent - was.exponent) < 1e-4) break;
   }
   const double rss_train = train_rss(best);
   const std::vector<double> best_coef = coef, best_sigma = sigma;
@@ -284,11 +373,14 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set) const {
   out.n_train = n;
   out.parameters = static_cast<int>(best_coef.size()) + (latency ? 1 : 0) + (compliance ? 1 : 0);
   out.aicc = aicc(rss_train, n, out.parameters);
-  out.rmse_train = n > 0 ? std::sqrt(rss_train / static_cast<double>(n)) : 0.0;
+  out.w_train = w;
+  out.rmse_train = w > 0 ? std::sqrt(rss_train / w) : 0.0;
   size_t n_test = 0;
-  const double rss_test = rss(test_, linear, best, best_coef, &n_test);
-  out.rmse_test = n_test > 0 ? std::sqrt(rss_test / static_cast<double>(n_test)) : 0.0;
+  double w_test = 0;
+  const double rss_test = rss(test_, linear, best, best_coef, &n_test, &w_test);
+  out.rmse_test = w_test > 0 ? std::sqrt(rss_test / w_test) : 0.0;
   out.n_test = n_test;
+  out.w_test = w_test;
 
   const double s2 = n > static_cast<size_t>(out.parameters) ? rss_train / static_cast<double>(n - out.parameters) : 0;
   // A nonlinear parameter's standard error from the curvature of the

@@ -8,6 +8,8 @@
 #include <array>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "effects.h"
 #include "replay.h"
 
@@ -23,11 +25,13 @@ struct SetFit {
   std::vector<EffectFit> effects;
   double rss_train = 0;     // (N)^2, over the fitted samples of the training traces
   size_t n_train = 0;
+  double w_train = 0;       // the sum of the training samples' weights (Replay::weight)
   int parameters = 0;
   double aicc = 0;          // of the training fit
-  double rmse_train = 0;    // N
-  double rmse_test = 0;     // N, on the judged traces: the score
+  double rmse_train = 0;    // N, weighted: sqrt(sum w e^2 / sum w)
+  double rmse_test = 0;     // N, weighted, on the judged traces: the score
   size_t n_test = 0;
+  double w_test = 0;
   bool valid = true;        // false: a fitted value outside its physical range (a negative friction, ...)
   // What residual() needs to predict again.
   std::vector<EffectKind> linear;  // the linear effects, in coef's order
@@ -61,17 +65,40 @@ class Fitter {
   // (and the actee's power law when exponent > 0), delayed by `delay`.
   void columns(size_t i, const std::vector<EffectKind>& linear, const Nonlinear& nl, std::vector<double>* base,
                std::vector<std::vector<double>>* cols) const;
-  // Linear least squares on a set of replays for fixed nonlinear parameters.
-  double solve(const std::vector<size_t>& on, const std::vector<EffectKind>& linear, const Nonlinear& nl,
-               std::vector<double>* coef, std::vector<double>* sigma, size_t* n) const;
+  // The weighted normal equations (each sample by Replay::weight) of a set
+  // of replays, lower triangle, added up sample after sample.
+  struct Sums {
+    Eigen::MatrixXd xtx;
+    Eigen::VectorXd xty, inflation;  // inflation: the differentiated columns' noise variance
+    double yty = 0, weights = 0;
+    size_t count = 0;
+  };
+  // For fixed nonlinear parameters; the power law's column last when
+  // `power_law_column` and an exponent is given (else only the base
+  // without the actee's own law).
+  Sums accumulate(const std::vector<size_t>& on, const std::vector<EffectKind>& linear, const Nonlinear& nl,
+                  bool power_law_column) const;
+  // The same with the power law's column added to sums made without it
+  // (no delay): only the samples in contact count.
+  Sums add_power_law(const Sums& linear_sums, const std::vector<size_t>& on, const std::vector<EffectKind>& linear,
+                     double exponent) const;
+  // Weighted linear least squares from the sums: the weighted RSS, with
+  // the coefficients and their standard errors.
+  double solve(const Sums& sums, std::vector<double>* coef, std::vector<double>* sigma, size_t* n,
+               double* wsum) const;
+  // The weighted sum of squared errors (N^2) of a fitted set; n samples of
+  // total weight wsum.
   double rss(const std::vector<size_t>& on, const std::vector<EffectKind>& linear, const Nonlinear& nl,
-             const std::vector<double>& coef, size_t* n) const;
+             const std::vector<double>& coef, size_t* n, double* wsum) const;
 
   const Model& model_;
   const std::vector<Replay>& replays_;
   std::vector<size_t> train_, test_;
   std::vector<std::array<std::vector<double>, kEffectKinds>> phi_;  // per replay: linear regressors
-  std::vector<std::vector<double>> weight_;  // per replay: the arm's weight torque, if gravity is off
+  std::vector<std::vector<double>> arm_weight_;  // per replay: the arm's weight torque, if gravity is off
+  std::vector<std::vector<double>> own_actee_;  // per replay: the actee's own law's torque (with an actee)
+  std::vector<std::vector<size_t>> fitted_;     // per replay: the samples fitted and scored
+  std::vector<std::vector<size_t>> contact_fitted_;  // per replay: those with the actee deflected
   ActeeGeometry actee_;
 };
 

@@ -100,6 +100,37 @@ double value_at(const std::vector<double>& t, const std::vector<double>& y, doub
   return (1 - w) * y[j - 1] + w * y[j];
 }
 
+std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay) {
+  if (delay == 0) return y;
+  // value_at at every t[i] - delay, in one walk: those times increase with i.
+  std::vector<double> out(y.size());
+  size_t j = 1;  // the first sample later than the time asked for, once inside
+  for (size_t i = 0; i < y.size(); ++i) {
+    const double at = t[i] - delay;
+    if (at <= t.front() || at >= t.back()) {
+      out[i] = at <= t.front() ? y.front() : y.back();
+      continue;
+    }
+    while (t[j] <= at) ++j;
+    const double w = (at - t[j - 1]) / (t[j] - t[j - 1]);
+    out[i] = (1 - w) * y[j - 1] + w * y[j];
+  }
+  return out;
+}
+
+void weigh(std::vector<Replay>& replays, double noise) {
+  // Only the weights' ratios matter to fits and weighted RMSEs; a
+  // noise-free effort (traces written by formulas) still ranks them.
+  const double sensor = std::max(noise * noise, 1e-24);  // N^2
+  for (Replay& r : replays) {
+    r.weight.resize(r.t.size());
+    for (size_t i = 0; i < r.t.size(); ++i) {
+      const double through = r.slope[i] * r.x_noise * r.to_newtons;  // N
+      r.weight[i] = sensor / (sensor + through * through);
+    }
+  }
+}
+
 double smooth_sign(double rate) { return std::tanh(rate / kSignWidth); }
 
 const char* phase_name(Phase p) {
@@ -128,6 +159,8 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
     r.measured.resize(n);
     r.nominal.resize(n);
     r.deflection.resize(n);
+    r.slope.resize(n);
+    r.weight.assign(n, 1.0);  // until weigh() knows the effort's noise
     std::vector<bool> at_limit(n), broken(n);
     const bool measured_actee = trace.has(Signal::actee_force) && actee;
     bool model_broke = false;
@@ -145,6 +178,8 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
                      model.damping * omega - model.arm_inertia * alpha + g_cos * std::cos(theta) +
                      g_sin * std::sin(theta);
       r.deflection[i] = deflection;
+      // The actee's torque F(a (theta_c - theta)) a turns by -F' a^2 per radian.
+      r.slope[i] = spring.slope - slope * a * a - g_cos * std::sin(theta) + g_sin * std::cos(theta);
       at_limit[i] = theta <= model.theta_min + kLimitBand || theta >= model.theta_max - kLimitBand;
       if (trace.has(Signal::broken)) {
         broken[i] = trace[Signal::broken][i] > 0.5;
@@ -158,8 +193,7 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       }
     }
     if (model.sensor_latency > 0) {  // the sensor reports the effort of `delay` ago
-      const std::vector<double> prompt = r.nominal;
-      for (size_t i = 0; i < n; ++i) r.nominal[i] = value_at(r.t, prompt, r.t[i] - model.sensor_latency);
+      r.nominal = delayed(r.t, r.nominal, model.sensor_latency);
     }
     // Within the fit's half-width of either end the rates are one-sided.
     assign_phases(r, at_limit, broken, d.half_width);
@@ -182,6 +216,8 @@ std::vector<Replay> replay_plates(const Model& model, const Measurement& m) {
     r.measured = trace[Signal::force];
     r.nominal.resize(n);
     r.deflection.resize(n);
+    r.slope.resize(n);
+    r.weight.assign(n, 1.0);
     std::vector<bool> at_limit(n, false), broken(n, false);
     // The shell gives way at its peak before the first large drop.
     size_t rupture = n;
@@ -197,6 +233,7 @@ std::vector<Replay> replay_plates(const Model& model, const Measurement& m) {
       double slope = 0;
       r.deflection[i] = std::max(0.0, r.x[i]);
       r.nominal[i] = actee_force_law(model, r.deflection[i], thickness, &slope);
+      r.slope[i] = slope;
       broken[i] = i >= rupture;
     }
     assign_phases(r, at_limit, broken, 0);  // the plates' law needs no rates
@@ -220,8 +257,9 @@ ActeeGeometry actee_geometry(const Model& model, Rig rig) {
 
 std::vector<double> actee_term(const Model& model, const Replay& r, const ActeeGeometry& g, double exponent,
                                double reference) {
-  std::vector<double> out(r.t.size());
+  std::vector<double> out(r.t.size(), 0.0);
   for (size_t i = 0; i < out.size(); ++i) {
+    if (r.deflection[i] <= 0) continue;  // most samples: the jaws are off the actee
     double slope = 0;
     out[i] = actee_law(model.actee_stiffness, exponent, reference, r.deflection[i], g.thickness, &slope) * g.arm;
   }

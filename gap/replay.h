@@ -31,6 +31,14 @@ struct Replay {
   std::vector<double> actee_measured, actee_nominal;  // N, lever with an actee_force column; else empty
   std::vector<Phase> phase;
   std::vector<bool> fitted;      // used in fits and scores: not at a limit, not after a break
+  // d nominal / d x at each sample (N*m/rad or N/m): how much of the
+  // motion sensor's noise the prediction takes on there (a stiff actee's
+  // contact passes it on many times over).
+  std::vector<double> slope;
+  // Each sample's weight in fits and scores (weigh(); 1 until then): 1
+  // where the effort sensor's noise is all the noise, less where the
+  // motion's adds to it.
+  std::vector<double> weight;
   // The motion sensor's noise (deviation, from x's second differences) and
   // what the differentiation makes of it in the rate and the acceleration.
   double x_noise = 0, rate_noise = 0, accel_noise = 0;
@@ -46,9 +54,20 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m);
 // measured displacement (the actee compiled with no tool).
 std::vector<Replay> replay_plates(const Model& actee_model, const Measurement& m);
 
+// Weights of generalised least squares: a sample's weight is the effort
+// sensor's noise variance over its whole noise variance, the sensor's
+// (`noise`, N) plus the motion's through the model's slope. Its unit is
+// the effort sensor's: a weighted RMSE of pure noise is `noise` where the
+// motion adds nothing.
+void weigh(std::vector<Replay>& replays, double noise);
+
 // y (sampled at the increasing times t) at time `at`: linear between
 // samples, held before the first and after the last.
 double value_at(const std::vector<double>& t, const std::vector<double>& y, double at);
+
+// y as a sensor `delay` s late reads it: value_at(t, y, t[i] - delay) at
+// every sample, in linear time.
+std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay);
 
 // The direction of motion, smoothed over a small speed so that a fit's
 // friction term is continuous (rad/s in, -1..1 out).

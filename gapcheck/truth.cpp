@@ -11,6 +11,7 @@ std::vector<std::string> Truth::names() const {
   if (inertia != 0) n.push_back("arm_inertia");
   if (weight != 0) n.push_back("gravity");
   if (latency != 0) n.push_back("sensor_latency");
+  if (actee_exponent != 0) n.push_back("actee_compliance");
   return n;
 }
 

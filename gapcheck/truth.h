@@ -5,6 +5,7 @@
 // scorer after the diagnosis.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,25 @@ struct Truth {
   double inertia = 0;      // kg*m^2, the arm's inertia about the pivot
   double weight = 0;       // N*m, the arm's weight torque amplitude (pivot axis level)
   double latency = 0;      // s, the effort sensor's delay
+  // The actee's law: F = K r (d / r)^n with r = limit / K (the linear law's
+  // deflection at the limit, where both give the limit). 0: its file's
+  // linear law, F = K d. Either way times h / (h - d), h its thickness
+  // across the jaws (actees/README.md: what is left when it is squeezed
+  // flat cannot be squeezed).
+  double actee_exponent = 0;
   std::vector<std::string> names() const;  // the afford effect names of what is non-zero
+};
+
+// An actee in the tool's jaws, by its numbers (from its actee file), and
+// where the jaws touch it (MuJoCo's collision, jaw_contact.h).
+struct ToolActee {
+  std::string file;
+  double at = 0;             // m, its distance from the fulcrum along the arm
+  double contact_angle = 0;  // rad
+  double thickness = 0;      // m, across the jaws
+  double stiffness = 0;      // N/m, the file's linear law
+  double limit = 0;          // N
+  bool breaks = false;
 };
 
 // A nominal tool, by its numbers (from its object file).
@@ -33,6 +52,7 @@ struct Tool {
   double spring_constant = 0;  // N/m
   double effort_at = 0;      // m, where the effort is applied and measured (its distance from the fulcrum)
   int effort_sign = 1;       // -1: on the handle side of a type 1 lever
+  std::optional<ToolActee> actee;  // measured with an actee in its jaws
 };
 
 // One drive of the emphasis: the arm's angle against time.
@@ -42,14 +62,20 @@ struct Profile {
   bool triangle = false;
   double seconds = 0;
   double turned = 0;  // rad, the tool turned about its hinge (gravity turns with it)
+  // With an actee: how far past the contact the drive squeezes, in
+  // multiples of the file's deflection at the limit (limit / stiffness);
+  // 0: a free drive, clear of the actee.
+  double squeeze = 0;
 };
 
 struct Sample {
   double t, angle, effort, actee;
+  bool broken;
 };
 
 // Runs MuJoCo on the tool with the truth along the profile; 1 kHz samples
-// with the sensor's noise (0.02 N, 1e-4 rad, fixed seed) and quantisation.
+// with the sensors' noise (effort 0.02 N, angle 1e-4 rad, actee 0.1 N;
+// fixed seed) and quantisation.
 std::vector<Sample> simulate(const Tool& tool, const Truth& truth, const Profile& profile, unsigned seed);
 
 }  // namespace gapcheck

@@ -19,6 +19,7 @@
 #include "png.h"
 #include "probe.h"
 #include "state.h"
+#include "replay.h"
 #include "report.h"
 #include "test_util.h"
 
@@ -192,6 +193,21 @@ TEST(Gap, TheAnglesNoiseThroughAnInertiaIsPartOfTheNoiseFloor) {
   EXPECT_NEAR(d.noise, 0.02, 0.003);
   EXPECT_NEAR(d.noise_through_model, 0.0246, 0.003);
   EXPECT_LT(d.rmse_after, 1.3 * d.noise_through_model);
+}
+
+// A latency's delayed signal, worked by hand on uneven samples: held
+// before the first sample and after the last, linear between; the same as
+// value_at at every shifted time, either way in time.
+TEST(GapReplay, ADelayedSignalIsInterpolatedBetweenUnevenSamples) {
+  const std::vector<double> t = {0, 0.001, 0.003, 0.004, 0.006}, y = {0, 1, 5, 4, 10};
+  const std::vector<double> late = delayed(t, y, 0.0015), early = delayed(t, y, -0.0025);
+  const std::vector<double> late_by_hand = {0, 0, 2, 4, 5.5}, early_by_hand = {4, 4.5, 8.5, 10, 10};
+  for (size_t i = 0; i < t.size(); ++i) {
+    EXPECT_NEAR(late[i], late_by_hand[i], 1e-12) << i;
+    EXPECT_NEAR(early[i], early_by_hand[i], 1e-12) << i;
+    EXPECT_EQ(late[i], value_at(t, y, t[i] - 0.0015)) << i;
+    EXPECT_EQ(early[i], value_at(t, y, t[i] + 0.0025)) << i;
+  }
 }
 
 TEST(Gap, APatchKeepsHowEachTraceWasHeld) {
@@ -440,6 +456,38 @@ TEST(Gap, ByForceTheContactAndTheBreakComeWhenMeasured) {
   EXPECT_NEAR(gaps[0].events[1].simulated_t, break_t, 0.0015);
   EXPECT_GT(gaps[0].events[1].simulated_force, 378);
   EXPECT_LT(gaps[0].angle_rmse, 1e-3);  // rad, up to the break
+}
+
+TEST(GapReplay, EachSampleIsWeighedByTheAnglesNoiseThroughTheModelsSlope) {
+  // The nutcracker on the walnut at 60 mm, held open, then 1 mm into the
+  // shell. Off the walnut the model's slope is the spring's alone,
+  // -2000 N/m * (10 mm)^2 = -0.2 N*m/rad; 1 mm in, the walnut's
+  // k h^2 / (h - d)^2 a^2 = 250 N/mm * (28.2 / 27.2)^2 * (60 mm)^2
+  // = 967.4 N*m/rad adds to it. With 1e-4 rad of angle noise read at
+  // 160 mm, that is 0.6047 N through the model against the effort
+  // sensor's 0.02 N: a weight of 0.02^2 / (0.02^2 + 0.6047^2) = 1.093e-3.
+  const fs::path dir = scratch("weights");
+  write(dir / "x.csv", good_csv());
+  write(dir / "m.yaml", kHead + "actee: {file: " + kSource + "/actees/walnut.yaml, at: 60 mm}\n"
+                        "effort_at: 160 mm\ntrace: x.csv\n");
+  const Model model = compile_measurement(load_measurement((dir / "m.yaml").string()));
+  const double theta_c = make_state(model)->contact_angle;
+  std::string csv = "t,angle,effort_force,actee_force\n";
+  for (int i = 0; i < 100; ++i) {
+    csv += std::to_string(i * 1e-3) + "," + std::to_string(i < 50 ? theta_c + 0.1 : theta_c - 0.001 / 0.060) + ",1,0\n";
+  }
+  write(dir / "x.csv", csv);
+  std::vector<Replay> replays = replay_lever(model, load_measurement((dir / "m.yaml").string()));
+  ASSERT_EQ(replays.size(), 1u);
+  Replay& r = replays[0];
+  EXPECT_NEAR(r.slope[10], -0.2, 1e-9);
+  EXPECT_NEAR(r.deflection[80], 0.001, 1e-6);  // to_string's six decimals of the angle
+  EXPECT_NEAR(r.slope[80], -0.2 - 967.4, 0.5);
+  EXPECT_EQ(r.weight[80], 1.0);  // until weighed
+  r.x_noise = 1e-4;
+  weigh(replays, 0.02);
+  EXPECT_NEAR(r.weight[10], 1 - 3.9e-5, 1e-6);
+  EXPECT_NEAR(r.weight[80], 1.093e-3, 2e-6);
 }
 
 TEST(Gap, AProbeFindsTheLeverAndTheSpring) {

@@ -1,0 +1,84 @@
+#include "jaw_contact.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "load.h"
+#include "mujoco_harness.h"
+
+namespace gapcheck {
+
+namespace {
+
+// m: a geom's extent along the world direction n (unit).
+double extent(const mjModel* m, const mjData* d, int geom, const double n[3]) {
+  double local[3];  // n in the geom's frame: xmat is row-major, geom to world
+  for (int i = 0; i < 3; ++i) {
+    local[i] = d->geom_xmat[9 * geom + 0 + i] * n[0] + d->geom_xmat[9 * geom + 3 + i] * n[1] +
+               d->geom_xmat[9 * geom + 6 + i] * n[2];
+  }
+  const mjtNum* size = m->geom_size + 3 * geom;
+  switch (m->geom_type[geom]) {
+    case mjGEOM_SPHERE: return 2 * size[0];
+    case mjGEOM_ELLIPSOID:
+      return 2 * std::sqrt(std::pow(size[0] * local[0], 2) + std::pow(size[1] * local[1], 2) +
+                           std::pow(size[2] * local[2], 2));
+    case mjGEOM_BOX:
+      return 2 * (std::abs(size[0] * local[0]) + std::abs(size[1] * local[1]) + std::abs(size[2] * local[2]));
+    default: throw std::runtime_error("gapcheck: an actee's thickness for spheres, ellipsoids and boxes only");
+  }
+}
+
+}  // namespace
+
+JawContact jaw_contact(const std::string& object_file, const std::string& actee_file, const std::string& agent_file,
+                       double at_m) {
+  const afford::ObjectSpec object = afford::load_object(object_file);
+  const afford::ActeeSpec actee = afford::load_actee(actee_file);
+  const afford::AgentSpec agent = afford::load_agent(agent_file);
+  afford::ModelOptions options;
+  options.actee.distance = at_m;
+  afford::CompiledSession session;
+  session.name = "gapcheck-contact-" + object.name + "-" + actee.name;
+  session.file = session.name;
+  session.model = afford::compile(object, &actee, &agent, options);
+  afford::MujocoScene scene(session);
+  mjModel* m = scene.model();
+  mjData* d = scene.data();
+  // MPR (the convex pairs' collider) to far below the 1e-7 rad needed: at
+  // 60 mm and 250 N/mm, 1e-7 rad is 1.5 mN of the actee's force.
+  m->opt.mpr_tolerance = 1e-14;
+  m->opt.mpr_iterations = 1000;
+  const int hinge = m->jnt_qposadr[mj_name2id(m, mjOBJ_JOINT, "hinge")];
+  const int actee_geom = mj_name2id(m, mjOBJ_GEOM, "actee");
+  const int arm = mj_name2id(m, mjOBJ_BODY, "moving_arm");
+  auto touches = [&](double theta) {
+    scene.restart();
+    d->qpos[hinge] = theta;
+    mj_forward(m, d);
+    for (int i = 0; i < d->ncon; ++i) {
+      const mjContact& c = d->contact[i];
+      const int other = c.geom1 == actee_geom ? c.geom2 : c.geom2 == actee_geom ? c.geom1 : -1;
+      if (other >= 0 && m->geom_bodyid[other] == arm && c.dist < 0) return true;
+    }
+    return false;
+  };
+  double closed = m->jnt_range[2 * mj_name2id(m, mjOBJ_JOINT, "hinge")];
+  double open = m->jnt_range[2 * mj_name2id(m, mjOBJ_JOINT, "hinge") + 1];
+  if (!touches(closed) || touches(open)) {
+    throw std::runtime_error(session.name + ": the jaws do not close on the actee within the hinge's range");
+  }
+  for (int i = 0; i < 100 && open - closed > 1e-13; ++i) {
+    const double mid = 0.5 * (closed + open);
+    (touches(mid) ? closed : open) = mid;
+  }
+  JawContact contact;
+  contact.angle = 0.5 * (closed + open);
+  // Across the jaws: the fixed jaw's normal is the tool body's y axis.
+  const int tool = mj_name2id(m, mjOBJ_BODY, "tool");
+  const double normal[3] = {d->xmat[9 * tool + 1], d->xmat[9 * tool + 4], d->xmat[9 * tool + 7]};
+  contact.thickness = extent(m, d, actee_geom, normal);
+  return contact;
+}
+
+}  // namespace gapcheck

@@ -1,0 +1,23 @@
+// Where the jaws first touch an actee, found by MuJoCo's own collision
+// detection (not afford's contact code): the tool and actee are exported
+// as a MuJoCo scene and the hinge angle is bisected between touching and
+// clear.
+#pragma once
+
+#include <string>
+
+namespace gapcheck {
+
+struct JawContact {
+  double angle = 0;      // rad: the largest hinge angle at which the actee overlaps a geom of the moving arm
+  double thickness = 0;  // m: the actee's extent across the jaws (along the fixed jaw's normal)
+};
+
+// For the actee placed `at_m` along the fixed arm. Throws
+// std::runtime_error when the jaws do not touch it even fully closed or
+// touch it even fully open, or its shape is not a sphere, an ellipsoid or
+// a box.
+JawContact jaw_contact(const std::string& object_file, const std::string& actee_file, const std::string& agent_file,
+                       double at_m);
+
+}  // namespace gapcheck
