@@ -62,6 +62,13 @@ Servo servo_for(const Tool& tool, const Profile& p) {
   return {stiffness, 2 * std::sqrt((stiffness + actee) * kMinInertia), step};
 }
 
+// MuJoCo's friction loss is a soft constraint: below a speed it resists as
+// a viscous torque, I b d / (1 - d) per rad/s (impedance d, b = 2 / (d
+// time constant)). With the arm's 1e-6 kg*m^2, d = 0.99 and 0.4 ms that was
+// 0.5 N*m*s/rad, viscous up to 0.054 rad/s: the squeezing drives' whole
+// speed, an effect no label named. MuJoCo's hardest impedance (0.9999) and
+// its shortest stable time constant (two steps) leave it viscous below
+// 5e-4 rad/s on the free drives, 2e-5 rad/s on the squeezing ones.
 std::string mjcf(const Tool& tool, const Truth& truth, double turned, const Servo& servo) {
   const double springref = tool.rest + (tool.preload_torque + truth.preload) / tool.torsion;
   const double mass = truth.weight > 0 ? truth.weight / (kG * kWeightRadius) : 1e-6;
@@ -77,7 +84,7 @@ std::string mjcf(const Tool& tool, const Truth& truth, double turned, const Serv
                 "  <worldbody><body name='arm'>\n"
                 "    <joint name='hinge' type='hinge' axis='0 0 1' limited='true' range='%.9g %.9g'\n"
                 "           stiffness='%.9g' springref='%.9g' frictionloss='%.9g' damping='%.9g' armature='%.9g'\n"
-                "           solreffriction='0.0004 1' solimpfriction='0.99 0.999 0.001'/>\n"
+                "           solreffriction='%.9g 1' solimpfriction='0.9999 0.9999 0.001'/>\n"
                 "    <geom type='sphere' size='0.005' pos='%g 0 0' mass='%.9g' contype='0' conaffinity='0'/>\n"
                 "  </body></worldbody>\n"
                 "  <actuator><general name='servo' joint='hinge' gaintype='fixed' gainprm='%.9g' biastype='affine'\n"
@@ -85,7 +92,7 @@ std::string mjcf(const Tool& tool, const Truth& truth, double turned, const Serv
                 "</mujoco>\n",
                 servo.step, truth.weight > 0 ? gravity : "0 0 -9.81", tool.theta_min - 0.2, tool.theta_max + 0.2,
                 tool.torsion, springref, tool.friction + truth.friction, truth.damping, kMinInertia + truth.inertia,
-                kWeightRadius, mass, servo.stiffness, -servo.stiffness, -servo.damping);
+                2 * servo.step, kWeightRadius, mass, servo.stiffness, -servo.stiffness, -servo.damping);
   return xml;
 }
 
