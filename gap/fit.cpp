@@ -235,16 +235,16 @@ Fitter::Sums Fitter::add_power_law(const Sums& linear_sums, const std::vector<si
   out.xty[k] = 0;
   out.inflation.conservativeResize(k + 1);
   out.inflation[k] = 0;
+  const bool gravity = std::find(linear.begin(), linear.end(), EffectKind::gravity) != linear.end();
   for (size_t i : on) {
     const Replay& r = replays_[i];
     const std::vector<double> law = actee_term(model_, r, actee_, exponent, 1.0);
     const std::vector<double>& own = own_actee_[i];
+    const bool weight = gravity && !arm_weight_[i].empty();
     for (size_t s : contact_fitted_[i]) {
       // As columns() makes them: the base without the actee's own law.
       double base = r.nominal[s];
-      for (EffectKind e : linear) {
-        if (e == EffectKind::gravity && !arm_weight_[i].empty()) base += arm_weight_[i][s];
-      }
+      if (weight) base += arm_weight_[i][s];
       base -= own[s];
       base *= r.to_newtons;
       const double y = r.measured[s] * r.to_newtons - base, wy = r.weight[s] * y;
