@@ -39,8 +39,8 @@ std::string report_text(const Diagnosis& d) {
   std::string out = "measurement " + d.measurement + ": verdict " + verdict_name(d.verdict) + "\n";
   char line[512];
   std::snprintf(line, sizeof line,
-                "held-out RMSE %.4g N before, %.4g N after (shrink %.0f %%); noise about %.3g N, %.3g N with the "
-                "motion's noise through the model\n",
+                "held-out RMSE %.4g N before, %.4g N after (shrink %.0f %%; each sample weighed by its noise); noise "
+                "about %.3g N, %.3g N with the motion's noise through the model\n",
                 d.rmse_before, d.rmse_after, 100 * d.shrink, d.noise, d.noise_through_model);
   out += line;
   std::snprintf(line, sizeof line, "judged by cross-validation over %zu folds of %zu traces\n", d.folds, d.judged_on.size());

@@ -49,7 +49,8 @@ JawContact jaw_contact(const std::string& object_file, const std::string& actee_
   // 60 mm and 250 N/mm, 1e-7 rad is 1.5 mN of the actee's force.
   m->opt.mpr_tolerance = 1e-14;
   m->opt.mpr_iterations = 1000;
-  const int hinge = m->jnt_qposadr[mj_name2id(m, mjOBJ_JOINT, "hinge")];
+  const int joint = mj_name2id(m, mjOBJ_JOINT, "hinge");
+  const int hinge = m->jnt_qposadr[joint];
   const int actee_geom = mj_name2id(m, mjOBJ_GEOM, "actee");
   const int arm = mj_name2id(m, mjOBJ_BODY, "moving_arm");
   auto touches = [&](double theta) {
@@ -63,8 +64,7 @@ JawContact jaw_contact(const std::string& object_file, const std::string& actee_
     }
     return false;
   };
-  double closed = m->jnt_range[2 * mj_name2id(m, mjOBJ_JOINT, "hinge")];
-  double open = m->jnt_range[2 * mj_name2id(m, mjOBJ_JOINT, "hinge") + 1];
+  double closed = m->jnt_range[2 * joint], open = m->jnt_range[2 * joint + 1];
   if (!touches(closed) || touches(open)) {
     throw std::runtime_error(session.name + ": the jaws do not close on the actee within the hinge's range");
   }

@@ -16,8 +16,8 @@
 
 #include <mujoco/mujoco.h>
 
-#include "jaw_contact.h"
 #include "diagnose.h"
+#include "jaw_contact.h"
 #include "load.h"
 #include "truth.h"
 
