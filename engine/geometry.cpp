@@ -312,6 +312,58 @@ constexpr double kSameDepth = 1e-9;
 constexpr std::size_t kMaxContacts = 4;  // box-box faces give four corners
 }  // namespace
 
+namespace {
+
+// A box and a rounded shape (ellipsoid, capsule, cylinder) across one of
+// the box's faces, decided without GJK where that face settles it. For the
+// face of largest separation, the shape's point deepest towards the face's
+// plane: when it lies over the face and beyond the plane, the distance is
+// exactly the plane's (the box lies behind the plane, the shape beyond it,
+// and the two points are that far apart); when it lies over the face and
+// inside the box, they overlap. Otherwise an edge or a corner is nearest,
+// and GJK decides; the separation across that face, where above 0, is
+// still a lower bound of the distance (in *distance). A flat jaw on a nut
+// is this case, where GJK converges only linearly (about 20 iterations),
+// or slower still when touching.
+enum class FaceAnswer { apart, overlap, undecided };
+
+FaceAnswer box_face_distance(const Geometry& box, const Eigen::Isometry3d& pbox, const Geometry& shape,
+                             const Eigen::Isometry3d& ps, double* distance, Vector3d* on_box, Vector3d* on_shape) {
+  const Vector3d half = 0.5 * box.spec().size;
+  const Vector3d centre_in_box = pbox.linear().transpose() * (ps.translation() - pbox.translation());
+  const Eigen::Matrix3d axes = pbox.linear().transpose() * ps.linear();  // the shape's axes in the box's frame
+  double best = -std::numeric_limits<double>::infinity();
+  int face = 0;
+  for (int i = 0; i < 3; ++i) {
+    // How far the shape's centre is beyond face i's plane, less its reach along that axis.
+    const Vector3d along = axes.row(i).transpose();
+    const double apart = std::abs(centre_in_box[i]) - half[i] - shape.support(along);
+    if (apart > best) {
+      best = apart;
+      face = i;
+    }
+  }
+  *distance = best;
+  Vector3d towards_box = Vector3d::Zero();
+  towards_box[face] = centre_in_box[face] > 0 ? -1.0 : 1.0;
+  const Vector3d deepest = centre_in_box + axes * shape.support_point(axes.transpose() * towards_box);
+  for (int j = 0; j < 3; ++j)
+    if (j != face && !(std::abs(deepest[j]) < half[j])) return FaceAnswer::undecided;
+  if (!(best > 0)) return best > -2 * half[face] ? FaceAnswer::overlap : FaceAnswer::undecided;
+  Vector3d on_face = deepest;
+  on_face[face] = -towards_box[face] * half[face];
+  *on_box = pbox * on_face;
+  *on_shape = pbox * deepest;
+  return FaceAnswer::apart;
+}
+
+bool rounded(const Geometry& g) {
+  const ShapeKind k = g.spec().kind;
+  return k == ShapeKind::ellipsoid || k == ShapeKind::capsule || k == ShapeKind::cylinder;
+}
+
+}  // namespace
+
 struct ContactQuery::Impl {
   // Separated shapes: a pair with a sphere is the distance from its centre,
   // in closed form for a box, sphere, capsule or cylinder (FCL's, called
@@ -390,11 +442,21 @@ struct ContactQuery::Impl {
   }
 
   // The distance between two placed shapes, their nearest points in
-  // near_a and near_b; -1 when they overlap.
+  // near_a and near_b; -1 when they overlap. A caller that only asks
+  // whether they are more than `enough` apart may get a lower bound above
+  // it instead, without the nearest points.
   double distance(const Geometry& a, const Eigen::Isometry3d& pa, const Geometry& b, const Eigen::Isometry3d& pb,
-                  const Vector3d& start = Vector3d::Zero()) {
+                  const Vector3d& start = Vector3d::Zero(),
+                  double enough = std::numeric_limits<double>::infinity()) {
     if (a.spec().kind == ShapeKind::sphere) return sphere_distance(a, pa, b, pb, &near_a, &near_b);
     if (b.spec().kind == ShapeKind::sphere) return sphere_distance(b, pb, a, pa, &near_b, &near_a);
+    FaceAnswer face = FaceAnswer::undecided;
+    double d = -std::numeric_limits<double>::infinity();
+    if (a.spec().kind == ShapeKind::box && rounded(b)) face = box_face_distance(a, pa, b, pb, &d, &near_a, &near_b);
+    if (b.spec().kind == ShapeKind::box && rounded(a)) face = box_face_distance(b, pb, a, pa, &d, &near_b, &near_a);
+    if (face == FaceAnswer::apart) return d;
+    if (face == FaceAnswer::overlap) return -1;
+    if (d > enough) return d;
     const GjkResult g = gjk_distance(a, pa, b, pb, start);
     if (g.overlap) return -1;
     near_a = g.on_a;
@@ -410,6 +472,11 @@ double ContactQuery::distance(const Geometry& a, const Eigen::Isometry3d& pose_a
                               const Geometry& b, const Eigen::Isometry3d& pose_b) {
   // Unsigned: an overlap is reported as -1 inside.
   return std::max(0.0, impl_->distance(a, pose_a, b, pose_b));
+}
+
+bool ContactQuery::apart(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
+                         const Eigen::Isometry3d& pose_b, double margin) {
+  return impl_->distance(a, pose_a, b, pose_b, Vector3d::Zero(), margin) > margin;
 }
 
 double ContactQuery::distance(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,
@@ -448,7 +515,7 @@ bool ContactQuery::contact(const Geometry& a, const Eigen::Isometry3d& pose_a, c
     out->distance = -a.spec().radius;
     return true;
   }
-  const double gap = q.distance(a, pose_a, b, pose_b);
+  const double gap = q.distance(a, pose_a, b, pose_b, Vector3d::Zero(), tolerance);
   if (gap > tolerance) return false;
   const Vector3d& near_a = q.near_a;
   const Vector3d& near_b = q.near_b;

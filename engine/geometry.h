@@ -72,6 +72,11 @@ class ContactQuery {
                   const Eigen::Isometry3d& pose_b, Eigen::Vector3d* near_a, Eigen::Vector3d* near_b,
                   const Eigen::Vector3d& start = Eigen::Vector3d::Zero());
 
+  // True when the shapes are more than margin (m) apart: a distance that
+  // may stop at a bound instead of the exact value.
+  bool apart(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b, const Eigen::Isometry3d& pose_b,
+             double margin);
+
   // True when the shapes overlap or are closer than tolerance (m); then
   // `out` holds the deepest point (or the midpoint of the gap) and normal.
   bool contact(const Geometry& a, const Eigen::Isometry3d& pose_a, const Geometry& b,

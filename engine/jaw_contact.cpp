@@ -42,20 +42,65 @@ MovingGap moving_gap(const Model& m, const Eigen::Isometry3d& actee_in_object, C
   return g;
 }
 
+// Whether every moving part is apart from the actee at theta (rad).
+bool moving_apart(const Model& m, const Eigen::Isometry3d& actee_in_object, ContactQuery& query, double theta) {
+  for (const ModelPart& part : m.parts) {
+    if (part.arm == Arm::moving && !query.apart(part.geometry, part_in_object(part, theta), m.actee(), actee_in_object, 0))
+      return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_object,
                           ContactQuery& query, double* theta_c, std::vector<JawContact>* contacts) {
   // Fully open and already touching: it does not fit in the jaws.
-  MovingGap at_open = moving_gap(m, actee_in_object, query, m.theta_max);
-  if (at_open.gap <= 0) return JawFit::too_large;
+  if (!moving_apart(m, actee_in_object, query, m.theta_max)) return JawFit::too_large;
   // Fully closed and still apart: the moving jaw never reaches it.
-  if (moving_gap(m, actee_in_object, query, m.theta_min).gap > 0) return JawFit::out_of_reach;
+  if (moving_apart(m, actee_in_object, query, m.theta_min)) return JawFit::out_of_reach;
+
+  // Where each part touches it: asked with the pair half a tolerance apart
+  // (the moving jaw a little open, the actee a little above the fixed
+  // jaw's face), so that the query is a distance, not a collision, and
+  // allocates nothing; the point is the middle of that small gap.
+  const double half = 0.5 * m.contact_tolerance;
+  const double r = std::max(std::abs(actee_in_object.translation().x()), 1e-6);
+  Eigen::Isometry3d lifted = actee_in_object;
+  lifted.translation().y() += half;
+  // Whether part i touches it with the moving arm at theta (rad).
+  auto touch = [&](size_t i, double theta) {
+    const ModelPart& part = m.parts[i];
+    const bool moving = part.arm == Arm::moving;
+    ContactPoint c;
+    const bool touching = query.contact(part.geometry, part_in_object(part, moving ? theta + half / r : theta),
+                                        m.actee(), moving ? actee_in_object : lifted, m.contact_tolerance, &c);
+    if (contacts == nullptr) return touching;
+    JawContact& jc = (*contacts)[i];
+    jc.touching = touching;
+    if (touching) {
+      const Eigen::Isometry3d arm = moving ? moving_arm_pose(theta) : Eigen::Isometry3d::Identity();
+      jc.in_arm.point = arm.inverse() * c.point;
+      jc.in_arm.normal = arm.linear().transpose() * c.normal;
+      jc.in_arm.distance = c.distance;
+    }
+    return touching;
+  };
+  // The moving jaw presses the actee onto the fixed jaw; an actee not resting
+  // on the fixed arm would be pushed away rather than gripped. The fixed
+  // arm does not turn: this is known before the search (and spares it
+  // while a tool is lifted off an actee).
+  bool on_fixed = false;
+  for (size_t i = 0; i < m.parts.size(); ++i)
+    if (m.parts[i].arm == Arm::fixed) on_fixed = touch(i, m.theta_max) || on_fixed;
+  if (!on_fixed) return JawFit::not_on_fixed_jaw;
+
   // Newton's method from the open side, which the gap's slope makes exact
   // to second order, aimed a little short (at a fraction `aim` of the gap)
   // so that the curvature does not carry it into the actee; where it
   // would leave the bracket, or after it did step into the actee (and
   // then aiming shorter), a bisection.
+  MovingGap at_open = moving_gap(m, actee_in_object, query, m.theta_max);
   double open = m.theta_max, closed = m.theta_min;
   double aim = 1.0 / 64;
   bool overshot = false;
@@ -75,36 +120,8 @@ JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_obje
       at_open = g;
     }
   }
-  // The moving jaw presses the actee onto the fixed jaw; an actee not resting
-  // on the fixed arm would be pushed away rather than gripped.
-  // Where each part touches it: asked with the pair half a tolerance apart
-  // (the moving jaw a little open, the actee a little above the fixed
-  // jaw's face), so that the query is a distance, not a collision, and
-  // allocates nothing; the point is the middle of that small gap.
-  const double half = 0.5 * m.contact_tolerance;
-  const double r = std::max(std::abs(actee_in_object.translation().x()), 1e-6);
-  Eigen::Isometry3d lifted = actee_in_object;
-  lifted.translation().y() += half;
-  bool on_fixed = false;
-  for (size_t i = 0; i < m.parts.size(); ++i) {
-    const ModelPart& part = m.parts[i];
-    const bool moving = part.arm == Arm::moving;
-    const Eigen::Isometry3d pose = part_in_object(part, moving ? open + half / r : open);
-    ContactPoint c;
-    const bool touching = query.contact(part.geometry, pose, m.actee(), moving ? actee_in_object : lifted,
-                                        m.contact_tolerance, &c);
-    on_fixed = on_fixed || (touching && part.arm == Arm::fixed);
-    if (contacts == nullptr) continue;
-    JawContact& jc = (*contacts)[i];
-    jc.touching = touching;
-    if (touching) {
-      const Eigen::Isometry3d arm = part.arm == Arm::moving ? moving_arm_pose(open) : Eigen::Isometry3d::Identity();
-      jc.in_arm.point = arm.inverse() * c.point;
-      jc.in_arm.normal = arm.linear().transpose() * c.normal;
-      jc.in_arm.distance = c.distance;
-    }
-  }
-  if (!on_fixed) return JawFit::not_on_fixed_jaw;
+  for (size_t i = 0; i < m.parts.size(); ++i)
+    if (m.parts[i].arm == Arm::moving) touch(i, open);
   *theta_c = open;
   return JawFit::fits;
 }

@@ -143,6 +143,68 @@ TEST(Gjk, ClosedFormsForSpheresThroughContactQuery) {
   EXPECT_NEAR(q.distance(ball, at(0, 0, 0), e, at(3, 4, 0)), 5 - 1 - 0.25, kExact);
 }
 
+TEST(Gjk, EllipsoidOverABoxFaceInClosedForm) {
+  // ContactQuery takes a box and an ellipsoid apart across a face in closed
+  // form. Turned 45 degrees about z, the ellipsoid (3, 1, 2) reaches down by
+  // sqrt((3 sin)^2 + (1 cos)^2) = sqrt(5); its lowest point is
+  // R diag(r)^2 d / |diag(r) d| with d = R^T (0, -1, 0): x = -8 / sqrt(20)
+  // from its centre. Over the face (|x| < 1): the gap 5 - sqrt(5) - 0.5,
+  // exactly, and the nearest points without GJK's sliding.
+  const Geometry b = Geometry::compile(box(2, 1, 2));
+  const Geometry e = Geometry::compile(ellipsoid(3, 1, 2));
+  ContactQuery q;
+  Vector3d on_box, on_e;
+  const Isometry3d pe = at(1.5, 5, 0.1, std::numbers::pi / 4);
+  const double x = 1.5 - 8 / std::sqrt(20.0);
+  EXPECT_NEAR(q.distance(b, at(0, 0, 0), e, pe, &on_box, &on_e), 4.5 - std::sqrt(5.0), kExact);
+  EXPECT_NEAR((on_box - Vector3d(x, 0.5, 0.1)).norm(), 0, kExact);
+  EXPECT_NEAR((on_e - Vector3d(x, 5 - std::sqrt(5.0), 0.1)).norm(), 0, kExact);
+  // The same pair the other way round, and the box turned and moved with it.
+  EXPECT_NEAR(q.distance(e, pe, b, at(0, 0, 0), &on_e, &on_box), 4.5 - std::sqrt(5.0), kExact);
+  EXPECT_NEAR((on_box - Vector3d(x, 0.5, 0.1)).norm(), 0, kExact);
+  const Isometry3d move = at(0.3, -0.2, 0.7, 1.1);
+  EXPECT_NEAR(q.distance(b, move, e, move * pe, &on_box, &on_e), 4.5 - std::sqrt(5.0), kExact);
+  EXPECT_NEAR((on_e - move * Vector3d(x, 5 - std::sqrt(5.0), 0.1)).norm(), 0, kExact);
+  // Centred at x = 0.2 its lowest point is at x = -1.59, beyond the face's
+  // edge at -1: the edge is nearest, and GJK answers (as gjk_distance does).
+  const Isometry3d off = at(0.2, 5, 0.1, std::numbers::pi / 4);
+  EXPECT_NEAR(q.distance(b, at(0, 0, 0), e, off), gjk_distance(b, at(0, 0, 0), e, off).distance, kExact);
+  EXPECT_GT(q.distance(b, at(0, 0, 0), e, off), 4.5 - std::sqrt(5.0));
+}
+
+// Random box-ellipsoid pairs: ContactQuery (the closed form where a face is
+// nearest) and GJK agree on the distance to GJK's tolerance, and on the
+// nearest points as far as GJK's slide on a flat face allows.
+TEST(Gjk, BoxFaceClosedFormAgreesWithGjkOnRandomPoses) {
+  const Geometry b = Geometry::compile(box(0.185, 0.012, 0.016));
+  const Geometry e = Geometry::compile(ellipsoid(0.018, 0.0141, 0.0125));
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> place(-0.1, 0.1), unit(-1, 1);
+  ContactQuery q;
+  int over_a_face = 0, elsewhere = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    Isometry3d pe = Isometry3d::Identity();
+    pe.linear() = Eigen::Quaterniond(Eigen::Vector4d(unit(rng), unit(rng), unit(rng), unit(rng)).normalized())
+                      .toRotationMatrix();
+    pe.translation() = Vector3d(place(rng), 0.3 * place(rng), 0.3 * place(rng));
+    const GjkResult g = gjk_distance(b, at(0, 0, 0), e, pe);
+    Vector3d on_box, on_e;
+    const double d = q.distance(b, at(0, 0, 0), e, pe, &on_box, &on_e);
+    if (g.overlap) {
+      EXPECT_EQ(d, 0) << "trial " << trial;
+      continue;
+    }
+    EXPECT_NEAR(d, g.distance, kGjkDistanceTolerance) << "trial " << trial;
+    EXPECT_LE(d, g.distance + 1e-15) << "trial " << trial;  // GJK stops above the distance
+    EXPECT_NEAR((on_box - g.on_a).norm(), 0, 1e-5) << "trial " << trial;
+    // Nearest point strictly inside a face: the closed form's case.
+    const auto inside = ((0.5 * b.spec().size - on_box.cwiseAbs()).array() > 1e-9).count();
+    (inside == 2 ? over_a_face : elsewhere) += 1;
+  }
+  EXPECT_GT(over_a_face, 150);
+  EXPECT_GT(elsewhere, 400);
+}
+
 // ---------------------------------------------------------------- against FCL
 
 // Random convex pairs apart by at least a millimetre: our distance agrees
