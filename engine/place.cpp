@@ -53,8 +53,10 @@ void place_bodies(const Model& m, State& s, const Sample& sample) {
   s.t = sample.t;
   s.hand = sample.hand;
   s.fingertip = sample.fingertip;
+  // Fig. 7; -1 without a taxonomy. A posture held from the last frame keeps its type.
+  const bool posture_changed = s.frame == 0 || !(sample.joint == s.joint);
   s.joint = sample.joint;
-  s.grasp_type = classify_grasp(m, s.joint);  // Fig. 7; -1 without a taxonomy
+  if (posture_changed) s.grasp_type = classify_grasp(m, s.joint);
   // A grasped object moves with the hand (Sec. 4.3.1: fingers move, posture
   // kept); a held actee moves with the object; an actee in the hand (Sec.
   // 4.3.3) but not in the jaws moves with the hand.
