@@ -314,47 +314,131 @@ constexpr std::size_t kMaxContacts = 4;  // box-box faces give four corners
 
 namespace {
 
-// A box and a rounded shape (ellipsoid, capsule, cylinder) across one of
-// the box's faces, decided without GJK where that face settles it. For the
-// face of largest separation, the shape's point deepest towards the face's
-// plane: when it lies over the face and beyond the plane, the distance is
-// exactly the plane's (the box lies behind the plane, the shape beyond it,
-// and the two points are that far apart); when it lies over the face and
-// inside the box, they overlap. Otherwise an edge or a corner is nearest,
-// and GJK decides; the separation across that face, where above 0, is
-// still a lower bound of the distance (in *distance). A flat jaw on a nut
-// is this case, where GJK converges only linearly (about 20 iterations),
-// or slower still when touching.
-enum class FaceAnswer { apart, overlap, undecided };
+// A box and a rounded shape (ellipsoid, capsule, cylinder), decided without
+// GJK where one of the box's faces or edges settles it. A flat jaw on a nut
+// is this case, where GJK converges only linearly (about 20 iterations), or
+// slower still when touching. In the box's frame:
+enum class BoxAnswer { apart, overlap, undecided };
 
-FaceAnswer box_face_distance(const Geometry& box, const Eigen::Isometry3d& pbox, const Geometry& shape,
-                             const Eigen::Isometry3d& ps, double* distance, Vector3d* on_box, Vector3d* on_shape) {
+struct PlacedRounded {
+  const Geometry& shape;
+  Vector3d centre;        // m, in the box's frame
+  Eigen::Matrix3d axes;   // the shape's axes in the box's frame
+  // The shape's point farthest along d (any length but zero), box frame.
+  Vector3d farthest(const Vector3d& d) const { return centre + axes * shape.support_point(axes.transpose() * d); }
+};
+
+// Beyond face i's plane (side si) and beyond edge j's (side sj) of a box
+// of half sizes `half`, the nearest feature of the box is the edge between
+// them, if anything: the direction n turning in that plane from the face's
+// normal to the edge's neighbour face's, where the separation along n is
+// largest, gives the distance. The separation is concave in n while it is
+// positive, so its slope has one root, found by false position (Illinois):
+// there the shape's farthest point towards the box and the edge's point
+// level with it are a pair whose distance the separation bounds from
+// below; the answer stands once the two agree within a tenth of GJK's
+// tolerance, and when that point lies along the edge. false: not settled.
+bool edge_distance(const PlacedRounded& s, const Vector3d& half, int i, int j, double si, double sj,
+                   double* distance, Vector3d* on_box, Vector3d* on_shape) {
+  const int k = 3 - i - j;
+  // n(u) = si (1 - u) e_i + sj u e_j for u in [0, 1]; w(u), in the plane and
+  // across n, points towards growing u.
+  auto probe = [&](double u, Vector3d* p, Vector3d* edge_point) {
+    Vector3d n = Vector3d::Zero(), w = Vector3d::Zero();
+    n[i] = si * (1 - u);
+    n[j] = sj * u;
+    w[i] = -si * u;
+    w[j] = sj * (1 - u);
+    *p = s.farthest(-n);
+    *edge_point = *p;
+    (*edge_point)[i] = si * half[i];
+    (*edge_point)[j] = sj * half[j];
+    const Vector3d gap = *p - *edge_point;
+    return std::pair<double, double>{gap.dot(w), gap.dot(n) / n.norm()};  // slope, separation
+  };
+  Vector3d p, edge_point;
+  double lo = 0, hi = 1;
+  double slope_lo = probe(lo, &p, &edge_point).first, slope_hi = probe(hi, &p, &edge_point).first;
+  if (!(slope_lo > 0 && slope_hi < 0)) return false;
+  int stale = 0;  // which end stayed last (Illinois halves its slope)
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double u = (lo * slope_hi - hi * slope_lo) / (slope_hi - slope_lo);
+    const auto [slope, separation] = probe(u, &p, &edge_point);
+    const double apart = (p - edge_point).norm();
+    if (separation > 0 && apart - separation < 0.1 * kGjkDistanceTolerance) {
+      if (!(std::abs(p[k]) <= half[k])) return false;  // a corner is nearest
+      *distance = apart;
+      *on_box = edge_point;
+      *on_shape = p;
+      return true;
+    }
+    if (slope > 0) {
+      lo = u;
+      slope_lo = slope;
+      if (stale == 1) slope_hi *= 0.5;
+      stale = 1;
+    } else {
+      hi = u;
+      slope_hi = slope;
+      if (stale == -1) slope_lo *= 0.5;
+      stale = -1;
+    }
+  }
+  return false;
+}
+
+// For the face of largest separation, the shape's point deepest towards
+// the face's plane: when it lies over the face and beyond the plane, the
+// distance is exactly the plane's (the box lies behind the plane, the
+// shape beyond it, and the two points are that far apart); when it lies
+// over the face and inside the box, they overlap. When it lies beyond one
+// edge of the face, that edge may settle it (edge_distance). Otherwise GJK
+// decides; the separation across that face, where above 0, is still a
+// lower bound of the distance (in *distance).
+BoxAnswer box_rounded_distance(const Geometry& box, const Eigen::Isometry3d& pbox, const Geometry& shape,
+                               const Eigen::Isometry3d& ps, double* distance, Vector3d* on_box, Vector3d* on_shape) {
   const Vector3d half = 0.5 * box.spec().size;
-  const Vector3d centre_in_box = pbox.linear().transpose() * (ps.translation() - pbox.translation());
-  const Eigen::Matrix3d axes = pbox.linear().transpose() * ps.linear();  // the shape's axes in the box's frame
+  const PlacedRounded s{shape, pbox.linear().transpose() * (ps.translation() - pbox.translation()),
+                        pbox.linear().transpose() * ps.linear()};
   double best = -std::numeric_limits<double>::infinity();
   int face = 0;
   for (int i = 0; i < 3; ++i) {
     // How far the shape's centre is beyond face i's plane, less its reach along that axis.
-    const Vector3d along = axes.row(i).transpose();
-    const double apart = std::abs(centre_in_box[i]) - half[i] - shape.support(along);
+    const Vector3d along = s.axes.row(i).transpose();
+    const double apart = std::abs(s.centre[i]) - half[i] - shape.support(along);
     if (apart > best) {
       best = apart;
       face = i;
     }
   }
   *distance = best;
+  const double side = s.centre[face] > 0 ? 1.0 : -1.0;
   Vector3d towards_box = Vector3d::Zero();
-  towards_box[face] = centre_in_box[face] > 0 ? -1.0 : 1.0;
-  const Vector3d deepest = centre_in_box + axes * shape.support_point(axes.transpose() * towards_box);
-  for (int j = 0; j < 3; ++j)
-    if (j != face && !(std::abs(deepest[j]) < half[j])) return FaceAnswer::undecided;
-  if (!(best > 0)) return best > -2 * half[face] ? FaceAnswer::overlap : FaceAnswer::undecided;
+  towards_box[face] = -side;
+  const Vector3d deepest = s.farthest(towards_box);
+  int beyond = -1, edges = 0;  // the face's edges the deepest point lies beyond
+  for (int j = 0; j < 3; ++j) {
+    if (j != face && !(std::abs(deepest[j]) < half[j])) {
+      beyond = j;
+      ++edges;
+    }
+  }
+  if (edges == 1 && best > 0) {
+    Vector3d near_box, near_shape;
+    if (!edge_distance(s, half, face, beyond, side, deepest[beyond] > 0 ? 1.0 : -1.0, distance, &near_box,
+                       &near_shape))
+      return BoxAnswer::undecided;
+    *on_box = pbox * near_box;
+    *on_shape = pbox * near_shape;
+    return BoxAnswer::apart;
+  }
+  if (edges > 0) return BoxAnswer::undecided;
+  if (!(best > 0)) return best > -2 * half[face] ? BoxAnswer::overlap : BoxAnswer::undecided;
   Vector3d on_face = deepest;
-  on_face[face] = -towards_box[face] * half[face];
+  on_face[face] = side * half[face];
   *on_box = pbox * on_face;
   *on_shape = pbox * deepest;
-  return FaceAnswer::apart;
+  return BoxAnswer::apart;
 }
 
 bool rounded(const Geometry& g) {
@@ -450,12 +534,12 @@ struct ContactQuery::Impl {
                   double enough = std::numeric_limits<double>::infinity()) {
     if (a.spec().kind == ShapeKind::sphere) return sphere_distance(a, pa, b, pb, &near_a, &near_b);
     if (b.spec().kind == ShapeKind::sphere) return sphere_distance(b, pb, a, pa, &near_b, &near_a);
-    FaceAnswer face = FaceAnswer::undecided;
+    BoxAnswer answer = BoxAnswer::undecided;
     double d = -std::numeric_limits<double>::infinity();
-    if (a.spec().kind == ShapeKind::box && rounded(b)) face = box_face_distance(a, pa, b, pb, &d, &near_a, &near_b);
-    if (b.spec().kind == ShapeKind::box && rounded(a)) face = box_face_distance(b, pb, a, pa, &d, &near_b, &near_a);
-    if (face == FaceAnswer::apart) return d;
-    if (face == FaceAnswer::overlap) return -1;
+    if (a.spec().kind == ShapeKind::box && rounded(b)) answer = box_rounded_distance(a, pa, b, pb, &d, &near_a, &near_b);
+    if (b.spec().kind == ShapeKind::box && rounded(a)) answer = box_rounded_distance(b, pb, a, pa, &d, &near_b, &near_a);
+    if (answer == BoxAnswer::apart) return d;
+    if (answer == BoxAnswer::overlap) return -1;
     if (d > enough) return d;
     const GjkResult g = gjk_distance(a, pa, b, pb, start);
     if (g.overlap) return -1;

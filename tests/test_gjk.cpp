@@ -144,8 +144,8 @@ TEST(Gjk, ClosedFormsForSpheresThroughContactQuery) {
 }
 
 TEST(Gjk, EllipsoidOverABoxFaceInClosedForm) {
-  // ContactQuery takes a box and an ellipsoid apart across a face in closed
-  // form. Turned 45 degrees about z, the ellipsoid (3, 1, 2) reaches down by
+  // ContactQuery takes a box and an ellipsoid apart across a face or an
+  // edge in closed form. Turned 45 degrees about z, the ellipsoid (3, 1, 2) reaches down by
   // sqrt((3 sin)^2 + (1 cos)^2) = sqrt(5); its lowest point is
   // R diag(r)^2 d / |diag(r) d| with d = R^T (0, -1, 0): x = -8 / sqrt(20)
   // from its centre. Over the face (|x| < 1): the gap 5 - sqrt(5) - 0.5,
@@ -170,19 +170,31 @@ TEST(Gjk, EllipsoidOverABoxFaceInClosedForm) {
   const Isometry3d off = at(0.2, 5, 0.1, std::numbers::pi / 4);
   EXPECT_NEAR(q.distance(b, at(0, 0, 0), e, off), gjk_distance(b, at(0, 0, 0), e, off).distance, kExact);
   EXPECT_GT(q.distance(b, at(0, 0, 0), e, off), 4.5 - std::sqrt(5.0));
+  // Off an edge: a ball-like ellipsoid of radius 0.5 beside the z edge of a
+  // box of half size 1 at (1, 1): sqrt(8) - 0.5, the box's point on the edge
+  // level with the centre (no slide along the edge as GJK's would).
+  const Geometry cube = Geometry::compile(box(2, 2, 2));
+  const Geometry ball = Geometry::compile(ellipsoid(0.5, 0.5, 0.5));
+  EXPECT_NEAR(q.distance(cube, at(0, 0, 0), ball, at(3, 3, 0.25), &on_box, &on_e), std::sqrt(8.0) - 0.5, 1e-13);
+  EXPECT_NEAR((on_box - Vector3d(1, 1, 0.25)).norm(), 0, 1e-9);
+  EXPECT_NEAR((on_e - (Vector3d(3, 3, 0.25) - 0.5 * Vector3d(1, 1, 0).normalized())).norm(), 0, 1e-9);
 }
 
-// Random box-ellipsoid pairs: ContactQuery (the closed form where a face is
-// nearest) and GJK agree on the distance to GJK's tolerance, and on the
-// nearest points as far as GJK's slide on a flat face allows.
-TEST(Gjk, BoxFaceClosedFormAgreesWithGjkOnRandomPoses) {
+// Random pairs of a box and an ellipsoid or a capsule: ContactQuery (in
+// closed form where a face or an edge is nearest) and GJK agree on the
+// distance to GJK's tolerance, and on an ellipsoid's nearest points as far
+// as GJK's slide on a flat face allows. Both answers are upper bounds of the true
+// distance; the closed form's is within a tenth of the tolerance of it.
+TEST(Gjk, BoxClosedFormsAgreeWithGjkOnRandomPoses) {
   const Geometry b = Geometry::compile(box(0.185, 0.012, 0.016));
-  const Geometry e = Geometry::compile(ellipsoid(0.018, 0.0141, 0.0125));
+  const std::vector<Geometry> shapes = {Geometry::compile(ellipsoid(0.018, 0.0141, 0.0125)),
+                                        Geometry::compile(round(ShapeKind::capsule, 0.008, 0.032))};
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> place(-0.1, 0.1), unit(-1, 1);
   ContactQuery q;
-  int over_a_face = 0, elsewhere = 0;
-  for (int trial = 0; trial < 2000; ++trial) {
+  int on_a_face = 0, on_an_edge = 0, at_a_corner = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const Geometry& e = shapes[static_cast<size_t>(trial) % shapes.size()];
     Isometry3d pe = Isometry3d::Identity();
     pe.linear() = Eigen::Quaterniond(Eigen::Vector4d(unit(rng), unit(rng), unit(rng), unit(rng)).normalized())
                       .toRotationMatrix();
@@ -195,14 +207,20 @@ TEST(Gjk, BoxFaceClosedFormAgreesWithGjkOnRandomPoses) {
       continue;
     }
     EXPECT_NEAR(d, g.distance, kGjkDistanceTolerance) << "trial " << trial;
-    EXPECT_LE(d, g.distance + 1e-15) << "trial " << trial;  // GJK stops above the distance
-    EXPECT_NEAR((on_box - g.on_a).norm(), 0, 1e-5) << "trial " << trial;
-    // Nearest point strictly inside a face: the closed form's case.
+    EXPECT_LE(d, g.distance + 0.1 * kGjkDistanceTolerance) << "trial " << trial;
+    // The ellipsoid's nearest point is unique (a capsule's is not where it
+    // lies parallel to the face).
+    if (e.spec().kind == ShapeKind::ellipsoid) {
+      EXPECT_NEAR((on_box - g.on_a).norm(), 0, 1e-5) << "trial " << trial;
+    }
+    // Where the box's nearest point lies: inside a face (two coordinates
+    // strictly within), on an edge (one), at a corner (none).
     const auto inside = ((0.5 * b.spec().size - on_box.cwiseAbs()).array() > 1e-9).count();
-    (inside == 2 ? over_a_face : elsewhere) += 1;
+    (inside == 2 ? on_a_face : inside == 1 ? on_an_edge : at_a_corner) += 1;
   }
-  EXPECT_GT(over_a_face, 150);
-  EXPECT_GT(elsewhere, 400);
+  EXPECT_GT(on_a_face, 300);
+  EXPECT_GT(on_an_edge, 400);
+  EXPECT_GT(at_a_corner, 100);
 }
 
 // ---------------------------------------------------------------- against FCL
