@@ -328,18 +328,20 @@ struct PlacedRounded {
   Vector3d farthest(const Vector3d& d) const { return centre + axes * shape.support_point(axes.transpose() * d); }
 };
 
-// Beyond face i's plane (side si) and beyond edge j's (side sj) of a box
-// of half sizes `half`, the nearest feature of the box is the edge between
+// Towards face i (side si) and beyond edge j's plane (side sj) of a box of
+// half sizes `half`, the nearest feature of the box is the edge between
 // them, if anything: the direction n turning in that plane from the face's
 // normal to the edge's neighbour face's, where the separation along n is
 // largest, gives the distance. The separation is concave in n while it is
 // positive, so its slope has one root, found by false position (Illinois):
 // there the shape's farthest point towards the box and the edge's point
 // level with it are a pair whose distance the separation bounds from
-// below; the answer stands once the two agree within a tenth of GJK's
-// tolerance, and when that point lies along the edge. false: not settled.
-bool edge_distance(const PlacedRounded& s, const Vector3d& half, int i, int j, double si, double sj,
-                   double* distance, Vector3d* on_box, Vector3d* on_shape) {
+// below; `apart` once the two agree within a tenth of GJK's tolerance and
+// that point lies along the edge. `overlap` once the shape's farthest
+// point lies inside the box. Otherwise (a corner nearest, or no answer
+// before the bracket closes) undecided.
+BoxAnswer edge_distance(const PlacedRounded& s, const Vector3d& half, int i, int j, double si, double sj,
+                        double* distance, Vector3d* on_box, Vector3d* on_shape) {
   const int k = 3 - i - j;
   // n(u) = si (1 - u) e_i + sj u e_j for u in [0, 1]; w(u), in the plane and
   // across n, points towards growing u.
@@ -359,19 +361,20 @@ bool edge_distance(const PlacedRounded& s, const Vector3d& half, int i, int j, d
   Vector3d p, edge_point;
   double lo = 0, hi = 1;
   double slope_lo = probe(lo, &p, &edge_point).first, slope_hi = probe(hi, &p, &edge_point).first;
-  if (!(slope_lo > 0 && slope_hi < 0)) return false;
+  if (!(slope_lo > 0 && slope_hi < 0)) return BoxAnswer::undecided;
   int stale = 0;  // which end stayed last (Illinois halves its slope)
-  for (int iteration = 0; iteration < 60; ++iteration) {
+  for (int iteration = 0; iteration < 60 && hi - lo > 1e-12; ++iteration) {
     const double u = (lo * slope_hi - hi * slope_lo) / (slope_hi - slope_lo);
     const auto [slope, separation] = probe(u, &p, &edge_point);
     const double apart = (p - edge_point).norm();
     if (separation > 0 && apart - separation < 0.1 * kGjkDistanceTolerance) {
-      if (!(std::abs(p[k]) <= half[k])) return false;  // a corner is nearest
+      if (!(std::abs(p[k]) <= half[k])) return BoxAnswer::undecided;  // a corner is nearest
       *distance = apart;
       *on_box = edge_point;
       *on_shape = p;
-      return true;
+      return BoxAnswer::apart;
     }
+    if ((p.cwiseAbs() - half).maxCoeff() < 0) return BoxAnswer::overlap;
     if (slope > 0) {
       lo = u;
       slope_lo = slope;
@@ -384,7 +387,7 @@ bool edge_distance(const PlacedRounded& s, const Vector3d& half, int i, int j, d
       stale = -1;
     }
   }
-  return false;
+  return BoxAnswer::undecided;
 }
 
 // For the face of largest separation, the shape's point deepest towards
@@ -423,14 +426,17 @@ BoxAnswer box_rounded_distance(const Geometry& box, const Eigen::Isometry3d& pbo
       ++edges;
     }
   }
-  if (edges == 1 && best > 0) {
+  if (edges == 1) {
     Vector3d near_box, near_shape;
-    if (!edge_distance(s, half, face, beyond, side, deepest[beyond] > 0 ? 1.0 : -1.0, distance, &near_box,
-                       &near_shape))
-      return BoxAnswer::undecided;
-    *on_box = pbox * near_box;
-    *on_shape = pbox * near_shape;
-    return BoxAnswer::apart;
+    double d = 0;
+    const BoxAnswer edge =
+        edge_distance(s, half, face, beyond, side, deepest[beyond] > 0 ? 1.0 : -1.0, &d, &near_box, &near_shape);
+    if (edge == BoxAnswer::apart) {
+      *distance = d;
+      *on_box = pbox * near_box;
+      *on_shape = pbox * near_shape;
+    }
+    return edge;
   }
   if (edges > 0) return BoxAnswer::undecided;
   if (!(best > 0)) return best > -2 * half[face] ? BoxAnswer::overlap : BoxAnswer::undecided;
