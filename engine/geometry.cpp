@@ -310,9 +310,6 @@ constexpr double kTinyGap = 1e-9;
 // Contacts this close in depth, m, count as one face: their points are averaged.
 constexpr double kSameDepth = 1e-9;
 constexpr std::size_t kMaxContacts = 4;  // box-box faces give four corners
-}  // namespace
-
-namespace {
 
 // A box and a rounded shape (ellipsoid, capsule, cylinder), decided without
 // GJK where one of the box's faces or edges settles it. A flat jaw on a nut
@@ -458,8 +455,10 @@ struct ContactQuery::Impl {
   // Separated shapes: a pair with a sphere is the distance from its centre,
   // in closed form for a box, sphere, capsule or cylinder (FCL's, called
   // directly: the traversal fcl::distance sets up around it cost twice the
-  // closed form itself); every other pair is our GJK (gjk.h), which
-  // allocates nothing and stops within a picometre.
+  // closed form itself); a box and a rounded shape across one of the box's
+  // faces or edges, in closed form too (box_rounded_distance); every other
+  // pair is our GJK (gjk.h), which allocates nothing and stops within a
+  // picometre.
   //
   // Overlaps go to FCL's collision via libccd (its default): its
   // penetration (MPR) gives sane normals and depths; FCL's own GJK/EPA
