@@ -1,5 +1,7 @@
 #include "number_format.h"
 
+#include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -25,21 +27,36 @@ constexpr double kTieMargin = 1e-4;
 // 9 + 4 fraction digits (or an exponent), with room to spare.
 constexpr long kFastRoom = 32;
 
-// x rounded to the nearest integer, when it rounds as the exact value does.
+// x (in [0, kMaxScaled)) rounded to the nearest integer, when it rounds as
+// the exact value does.
 bool round_unambiguous(double x, uint64_t* rounded) {
-  const double whole = std::floor(x);
-  const double fraction = x - whole;  // exact: x < 2^53
+  const uint64_t whole = static_cast<uint64_t>(x);  // floor, for x >= 0
+  const double fraction = x - static_cast<double>(whole);  // exact: x < 2^53
   if (std::abs(fraction - 0.5) < kTieMargin) return false;
-  *rounded = static_cast<uint64_t>(whole) + (fraction > 0.5 ? 1 : 0);
+  *rounded = whole + (fraction > 0.5 ? 1 : 0);
   return true;
 }
 
+// "00" to "99": two digits a division.
+constexpr auto kDigitPairs = [] {
+  std::array<char, 200> pairs{};
+  for (int i = 0; i < 100; ++i) {
+    pairs[static_cast<size_t>(2 * i)] = static_cast<char>('0' + i / 10);
+    pairs[static_cast<size_t>(2 * i + 1)] = static_cast<char>('0' + i % 10);
+  }
+  return pairs;
+}();
+
 // value in exactly `count` digits, leading zeros included.
 char* put_digits(char* p, uint64_t value, int count) {
-  for (int i = count; i-- > 0;) {
-    p[i] = static_cast<char>('0' + value % 10);
-    value /= 10;
+  int i = count;
+  for (; i >= 2; i -= 2) {
+    const size_t pair = static_cast<size_t>(2 * (value % 100));
+    p[i - 2] = kDigitPairs[pair];
+    p[i - 1] = kDigitPairs[pair + 1];
+    value /= 100;
   }
+  if (i == 1) p[0] = static_cast<char>('0' + value % 10);
   return p + count;
 }
 
@@ -57,11 +74,17 @@ char* copy(char* p, const char* from, int count) {
 // |v| = digits * 10^(exponent - precision + 1), digits of `precision`
 // figures, when the rounding to them is unambiguous.
 bool significant_digits(double magnitude, int precision, uint64_t* digits, int* exponent) {
-  // The decimal exponent from the binary one (log10(2) = 0.30103): at most
-  // one too small, which the scaled value then says.
-  int binary_exponent = 0;
-  std::frexp(magnitude, &binary_exponent);  // magnitude in [2^(b-1), 2^b)
-  int e = static_cast<int>(std::floor((binary_exponent - 1) * 0.30102999566398120));
+  // The decimal exponent from the binary one (log10(2) = 0.30103 as
+  // 78913 / 2^18, floored by the shift): at most one too small, which the
+  // scaled value then says.
+  int binary_exponent = 0;  // magnitude in [2^(b-1), 2^b), as frexp gives it
+  const int biased = static_cast<int>(std::bit_cast<uint64_t>(magnitude) >> 52);  // magnitude >= 0
+  if (biased > 0) {
+    binary_exponent = biased - 1022;
+  } else {
+    std::frexp(magnitude, &binary_exponent);  // subnormal
+  }
+  int e = ((binary_exponent - 1) * 78913) >> 18;
   for (int attempt = 0; attempt < 3; ++attempt) {
     const int k = precision - 1 - e;
     if (k < -kMaxExactPow10 || k > kMaxExactPow10) return false;
