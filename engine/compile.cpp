@@ -120,8 +120,8 @@ void compile_actee(const ActeeSpec& a, const ModelOptions& options, Model& m) {
   m.actee_start = m.object_start * in_object;
   // An actee placed in the jaws must be one they can close on.
   ContactQuery query;
-  double theta_c = 0;
-  const JawFit fit = find_contact_angle(m, in_object, query, &theta_c, nullptr);
+  double theta_c = 0, load_distance = 0;
+  const JawFit fit = find_contact_angle(m, in_object, query, &theta_c, &load_distance, nullptr);
   const std::string where = "at " + format_quantity(r, dim::length);
   const double thickness = m.actee().support(Eigen::Vector3d::UnitY()) + lift;
   if (fit == JawFit::too_large) {

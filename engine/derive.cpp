@@ -37,8 +37,8 @@ ActeeFit fit_actee(const Model& m) {
     const double r = m.application_from + (m.application_to - m.application_from) * i / kSteps;
     Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
     at.translation() = Eigen::Vector3d(r, lift, 0);
-    double theta_c = 0;
-    const JawFit jaw = find_contact_angle(m, at, query, &theta_c, nullptr);
+    double theta_c = 0, load_distance = 0;
+    const JawFit jaw = find_contact_angle(m, at, query, &theta_c, &load_distance, nullptr);
     if (jaw != JawFit::fits) {
       Span& span = jaw == JawFit::too_large ? too_large : jaw == JawFit::out_of_reach ? out_of_reach : off_jaw;
       if (!span.seen) span.from = r;
@@ -51,7 +51,7 @@ ActeeFit fit_actee(const Model& m) {
       fit.from = r;
       fit.contact_angle = theta_c;
       const double far = std::abs(m.emphasis_to) > std::abs(m.emphasis_from) ? m.emphasis_to : m.emphasis_from;
-      fit.effort_to_limit = effort_for_load(m, theta_c, far, r, m.actee_limit);
+      fit.effort_to_limit = effort_for_load(m, theta_c, far, load_distance, m.actee_limit);
     }
     fit.to = r;
   }

@@ -12,7 +12,7 @@ namespace afford {
 struct ForcedLever {
   double effort_distance = 0;  // m, where the effort pushes along the moving arm (> 0)
   bool actee = false;          // an actee between the jaws, unbroken
-  double load_distance = 0;    // m, its distance from the fulcrum (> 0)
+  double load_distance = 0;    // m, its lever arm about the fulcrum (> 0), as State::load_distance
   double contact_angle = 0;    // rad, where the jaws touch it
   double thickness = 0;        // m, its extent across the jaws
   Eigen::Matrix3d object_rotation = Eigen::Matrix3d::Identity();  // the tool in the world, for gravity

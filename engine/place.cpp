@@ -33,9 +33,9 @@ void refresh_contact_angle(const Model& m, State& s) {
     s.load_distance = 0;
     return;
   }
-  s.between_jaws =
-      find_contact_angle(m, rel, *s.query, &s.contact_angle, &s.jaw_contact) == JawFit::fits;
-  s.load_distance = s.between_jaws ? rel.translation().x() : 0.0;
+  s.between_jaws = find_contact_angle(m, rel, *s.query, &s.contact_angle, &s.load_distance, &s.jaw_contact) ==
+                   JawFit::fits;
+  if (!s.between_jaws) s.load_distance = 0;
   s.actee_thickness = thickness_across_jaws(m, rel);
 }
 

@@ -15,11 +15,14 @@ Eigen::Isometry3d part_in_object(const ModelPart& part, double theta_rad);
 enum class JawFit { fits, too_large, out_of_reach, not_on_fixed_jaw };
 
 // The largest opening angle in [theta_min, theta_max] at which the moving
-// arm touches an actee placed at actee_in_object, and (if `contacts` is not
+// arm touches an actee placed at actee_in_object; the load's lever arm
+// there (m, signed as the actee's distance along the arm: the moment of the
+// moving jaw's push about the hinge per newton); and (if `contacts` is not
 // null, sized to the parts) where each part touches it there, in the part's
-// arm frame.
+// arm frame. theta_c and load_distance are set only when it fits.
 JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_object,
-                          ContactQuery& query, double* theta_c, std::vector<JawContact>* contacts);
+                          ContactQuery& query, double* theta_c, double* load_distance,
+                          std::vector<JawContact>* contacts);
 
 // The actee's extent (m) across the jaws, placed at actee_in_object: along
 // the fixed jaw's normal, the object's y axis.

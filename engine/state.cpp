@@ -44,9 +44,9 @@ void reset(const Model& m, State& s) {
     s.placed_object = s.object_pose;
     s.placed_actee = s.actee_pose;
     s.jaw_contact.assign(m.parts.size(), JawContact{});
-    s.between_jaws = find_contact_angle(m, s.actee_in_object, *s.query, &s.contact_angle,
+    s.between_jaws = find_contact_angle(m, s.actee_in_object, *s.query, &s.contact_angle, &s.load_distance,
                                         &s.jaw_contact) == JawFit::fits;
-    s.load_distance = s.between_jaws ? s.actee_in_object.translation().x() : 0.0;
+    if (!s.between_jaws) s.load_distance = 0;
     s.actee_thickness = thickness_across_jaws(m, s.actee_in_object);
   }
   // The delay in whole frames and one more, to interpolate between two.

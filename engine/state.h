@@ -92,7 +92,7 @@ struct State {
   double theta_command = 0;  // rad, where the tracked thumb would put the arm (eq. 1): the hand's target
   double omega_command = 0;  // rad/s, its rate
   double effort_distance = 0;  // m, D_ag: signed distance of the thumb along the moving arm
-  double load_distance = 0;    // m, D_ac: signed distance of the actee along the arm
+  double load_distance = 0;    // m, D_ac: the load's signed lever arm, where the moving jaw touches the actee
   LeverPattern pattern = LeverPattern::type2;  // as the effort and load sit now (Step 2-1)
   double thumb_speed = 0;        // m/s, v of eq. 2, along L_d, closing positive
   double compression = 0;        // m, spring compression d of eq. 4

@@ -87,10 +87,10 @@ ExploreResult explore(const Explorer& e, Shard shard, int threads,
     s.points.resize(g.efforts.size());
     const Model& m = *e.models[static_cast<size_t>(s.key.actee)][static_cast<size_t>(s.key.placement)];
     const double thumb = g.thumbs[static_cast<size_t>(s.key.thumb)];
-    const double at = g.actees[static_cast<size_t>(s.key.actee)].placements[static_cast<size_t>(s.key.placement)];
-    s.mechanical_advantage = mechanical_advantage(thumb, at);
-    const double contact = e.jaws[static_cast<size_t>(s.key.actee)][static_cast<size_t>(s.key.placement)].contact_angle;
-    s.lever_effort_at_limit = effort_for_load(m, contact, thumb, at, m.actee_limit);
+    // The load acts where the moving jaw touches the actee (jaw_contact.cpp).
+    const JawsAtRest& jaws = e.jaws[static_cast<size_t>(s.key.actee)][static_cast<size_t>(s.key.placement)];
+    s.mechanical_advantage = mechanical_advantage(thumb, jaws.lever.load_distance);
+    s.lever_effort_at_limit = effort_for_load(m, jaws.contact_angle, thumb, jaws.lever.load_distance, m.actee_limit);
     result.series.push_back(std::move(s));
   }
 

@@ -74,6 +74,22 @@ JawContact jaw_contact(const std::string& object_file, const std::string& actee_
   }
   JawContact contact;
   contact.angle = 0.5 * (closed + open);
+  // The moving jaw pushes along the contact's normal (the first row of
+  // MuJoCo's contact frame) at its point: the moment arm about the hinge
+  // is |((p - anchor) x n) . axis|, read at the last angle that touched.
+  touches(closed);
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    const int other = c.geom1 == actee_geom ? c.geom2 : c.geom2 == actee_geom ? c.geom1 : -1;
+    if (other < 0 || m->geom_bodyid[other] != arm || !(c.dist < 0)) continue;
+    const mjtNum* anchor = d->xanchor + 3 * joint;
+    const mjtNum* axis = d->xaxis + 3 * joint;
+    const double p[3] = {c.pos[0] - anchor[0], c.pos[1] - anchor[1], c.pos[2] - anchor[2]};
+    const double* n = c.frame;
+    const double moment[3] = {p[1] * n[2] - p[2] * n[1], p[2] * n[0] - p[0] * n[2], p[0] * n[1] - p[1] * n[0]};
+    contact.lever = std::abs(moment[0] * axis[0] + moment[1] * axis[1] + moment[2] * axis[2]);
+  }
+  if (!(contact.lever > 0)) throw std::runtime_error(session.name + ": MuJoCo's contact with the moving jaw was lost");
   // Across the jaws: the fixed jaw's normal is the tool body's y axis.
   const int tool = mj_name2id(m, mjOBJ_BODY, "tool");
   const double normal[3] = {d->xmat[9 * tool + 1], d->xmat[9 * tool + 4], d->xmat[9 * tool + 7]};

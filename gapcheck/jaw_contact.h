@@ -11,6 +11,7 @@ namespace gapcheck {
 struct JawContact {
   double angle = 0;      // rad: the largest hinge angle at which the actee overlaps a geom of the moving arm
   double thickness = 0;  // m: the actee's extent across the jaws (along the fixed jaw's normal)
+  double lever = 0;      // m: the moment arm about the hinge of the moving jaw's push, along MuJoCo's contact normal
 };
 
 // For the actee placed `at_m` along the fixed arm. Throws

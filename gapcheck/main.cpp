@@ -56,6 +56,7 @@ Tool with_actee(Tool tool, const fs::path& source, const std::string& actee, dou
   const JawContact contact = jaw_contact(tool.file, file.string(), (source / "agents" / "hand.yaml").string(), at_m);
   a.contact_angle = contact.angle;
   a.thickness = contact.thickness;
+  a.lever = contact.lever;
   a.stiffness = spec.stiffness;
   a.limit = spec.limit;
   a.breaks = spec.breaks;

@@ -55,7 +55,7 @@ struct Servo {
 };
 Servo servo_for(const Tool& tool, const Profile& p) {
   if (p.squeeze == 0 || !tool.actee) return {kServoStiffness, kServoDamping, kStep};
-  const double actee = tool.actee->stiffness * tool.actee->at * tool.actee->at;  // N*m/rad
+  const double actee = tool.actee->stiffness * tool.actee->lever * tool.actee->lever;  // N*m/rad
   const double stiffness = std::max(kServoStiffness, 4 * actee);
   const double omega = std::sqrt((stiffness + actee) / kMinInertia);  // rad/s
   const double step = kStep / std::ceil(kStep * omega / 0.5);         // omega * step <= 0.5
@@ -109,7 +109,7 @@ double target(const Tool& tool, const Profile& p, double t) {
     // Squeezing: from just clear of it to the squeeze past its contact.
     const double clear = a.contact_angle + 0.05 * span;
     const double high = p.squeeze > 0 ? clear : tool.theta_max - 0.1 * span;
-    const double low = p.squeeze > 0 ? a.contact_angle - p.squeeze * a.limit / (a.stiffness * a.at) : clear;
+    const double low = p.squeeze > 0 ? a.contact_angle - p.squeeze * a.limit / (a.stiffness * a.lever) : clear;
     mid = 0.5 * (high + low);
     amp = 0.5 * (high - low);
   }
@@ -164,12 +164,12 @@ std::vector<Sample> simulate(const Tool& tool, const Truth& truth, const Profile
       d->qfrc_applied[0] = compression > 0 ? truth.cubic * compression * compression * compression * tool.spring_position : 0.0;
       if (tool.actee && !broken) {
         const ToolActee& a = *tool.actee;
-        load = actee_force(a, truth, a.at * (a.contact_angle - d->qpos[0]));
+        load = actee_force(a, truth, a.lever * (a.contact_angle - d->qpos[0]));
         if (a.breaks && load > a.limit) {  // the shell gives way: it resists no more
           broken = true;
           load = 0;
         }
-        d->qfrc_applied[0] += load * a.at;  // it pushes the jaws open
+        d->qfrc_applied[0] += load * a.lever;  // it pushes the jaws open where the jaw touches it
       }
       mj_step(m, d);
     }

@@ -34,6 +34,7 @@ struct Truth {
 struct ToolActee {
   std::string file;
   double at = 0;             // m, its distance from the fulcrum along the arm
+  double lever = 0;          // m, the moment arm of the moving jaw's push on it (MuJoCo's contact)
   double contact_angle = 0;  // rad
   double thickness = 0;      // m, across the jaws
   double stiffness = 0;      // N/m, the file's linear law

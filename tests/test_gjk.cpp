@@ -284,7 +284,11 @@ TEST(Gjk, AgreesWithFclOnRandomPoses) {
 // ellipsoid of semi-axes (a, b, b) centred at (r, b) below it when the
 // centre's depth under the plane equals the ellipsoid's reach along the
 // normal: r sin - b cos = sqrt(a^2 sin^2 + b^2 cos^2); their difference is
-// the gap.
+// the gap. The jaw touches it at P = c + (-a^2 sin, b^2 cos) / h, h that
+// reach, and pushes along the normal: the load's lever arm about the hinge
+// is |P x n| = r cos + b sin - (a^2 - b^2) sin cos / h, short of r for an
+// ellipsoid long along the jaw (for a sphere, r: the tangent lengths from
+// the hinge are equal).
 TEST(Gjk, ContactAngleOnAnEllipsoidIsTheTangentPlane) {
   const double a = 0.018, b = 0.0141;
   Model m;
@@ -307,15 +311,19 @@ TEST(Gjk, ContactAngleOnAnEllipsoidIsTheTangentPlane) {
     auto excess = [&](double t) {
       return r * std::sin(t) - b * std::cos(t) - std::hypot(a * std::sin(t), b * std::cos(t));
     };
-    double theta_c = 0;
+    double theta_c = 0, load_distance = 0;
     std::vector<JawContact> contacts(2);
-    ASSERT_EQ(find_contact_angle(m, at(r, b, 0), q, &theta_c, &contacts), JawFit::fits) << r;
+    ASSERT_EQ(find_contact_angle(m, at(r, b, 0), q, &theta_c, &load_distance, &contacts), JawFit::fits) << r;
     // The jaw within 1e-11 m of the actee, on the open side, as
     // find_contact_angle promises.
     // (GJK's tolerance, 1e-12 m, on the other side).
     EXPECT_GE(excess(theta_c), -kExact) << "r = " << r;
     EXPECT_LE(excess(theta_c), 1e-11) << "r = " << r;
     EXPECT_TRUE(contacts[0].touching && contacts[1].touching);
+    const double s = std::sin(theta_c), c = std::cos(theta_c), h = std::hypot(a * s, b * c);
+    const double lever = r * c + b * s - (a * a - b * b) * s * c / h;
+    EXPECT_NEAR(load_distance, lever, 1e-8) << "r = " << r;
+    EXPECT_LT(load_distance, r - 1e-3) << "r = " << r;
   }
 }
 

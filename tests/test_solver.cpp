@@ -58,12 +58,16 @@ TEST(Solver, ActeeForceFollowsMomentBalanceForEveryPattern) {
     const Model m = model_of(tool.yaml, &nut, tool.load);
     Rig rig(m, tool.effort);
     ASSERT_TRUE(rig.state().between_jaws) << tool.name;
+    // The load's lever arm is where the jaw touches the nut: a sphere resting
+    // on a jaw face through the hinge is touched at its centre's distance,
+    // the two tangents from the hinge being equally long.
+    EXPECT_NEAR(rig.state().load_distance, tool.load, 1e-8) << tool.name;
     rig.close_to(rig.state().contact_angle);
     for (int i = 0; i < 3; ++i) {
       rig.push(0.004);  // the thumb goes on past the blocked arm
       const State& s = rig.state();
       ASSERT_TRUE(s.blocked) << tool.name;
-      const double a = std::abs(tool.load), b = std::abs(s.effort_distance);
+      const double a = std::abs(s.load_distance), b = std::abs(s.effort_distance);
       const double spring_torque = expected_spring_force(o, s.theta) * std::abs(o.spring.position);
       // The actee's reaction: its stiffness times the jaw's travel into it,
       // stiffened by h / (h - deflection) (the nut is h = 20 mm across).

@@ -191,10 +191,9 @@ TEST(MjcfMujoco, ActeeLoadMatchesTheEngine) {
   const HandServo hand = hand_servo(session);
   const Eigen::Isometry3d in_object = m.object_start.inverse() * m.actee_start;
   ContactQuery query;
-  double theta_c = 0;
-  ASSERT_EQ(find_contact_angle(m, in_object, query, &theta_c, nullptr), JawFit::fits);
+  double theta_c = 0, a = 0;  // a: m, the engine's load distance, where the jaw touches the walnut
+  ASSERT_EQ(find_contact_angle(m, in_object, query, &theta_c, &a, nullptr), JawFit::fits);
   const double thickness = thickness_across_jaws(m, in_object);
-  const double a = in_object.translation().x();  // m, the engine's load distance
   const auto load = [&](double th) {
     double slope = 0;
     return actee_force_law(m, a * (theta_c - th), thickness, &slope);
