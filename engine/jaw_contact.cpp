@@ -18,8 +18,9 @@ namespace {
 constexpr double kContactGap = 1e-11;
 constexpr double kAngleBracket = 1e-12;
 // The gap (m) at which the load's lever arm is read: large enough that
-// GJK's 1e-12 m leaves the normal known to 1e-7, small enough that the
-// extrapolation to the touch errs by less than 1e-8 m.
+// GJK's 1e-12 m leaves the normal known to 1e-7 (the closed forms give it
+// exactly), small enough that the extrapolation to the touch errs by less
+// than 1e-11 m.
 constexpr double kLeverGap = 1e-5;
 
 // The actee and the moving part nearest it at angle theta.
@@ -148,9 +149,9 @@ JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_obje
   // the fixed jaw is touched right at its centre's distance (the two
   // tangents from the hinge are equally long), an elongated nut is not (the
   // walnut at 60 mm at 56.6 mm), and MuJoCo, which pushes at the contact,
-  // agrees. Read with the jaw opened by one and two kLeverGap, where the
-  // nearest points and their normal are well defined, and extrapolated to
-  // the touch: the error is second order in that opening.
+  // agrees. Read with the jaw opened by one, two and three kLeverGap, where
+  // the nearest points and their normal are well defined, and extrapolated
+  // to the touch: the error is third order in that opening.
   double arm = 0, nearest = std::numeric_limits<double>::infinity();
   size_t pushing = m.parts.size();
   for (size_t i = 0; i < m.parts.size(); ++i) {
@@ -166,8 +167,10 @@ JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_obje
   }
   if (pushing < m.parts.size()) {
     double gap = 0;
-    const double twice = push_arm(m, m.parts[pushing], actee_in_object, query, open + 2 * kLeverGap / r, &gap);
-    if (twice >= 0) arm = 2 * arm - twice;
+    const ModelPart& part = m.parts[pushing];
+    const double twice = push_arm(m, part, actee_in_object, query, open + 2 * kLeverGap / r, &gap);
+    const double thrice = push_arm(m, part, actee_in_object, query, open + 3 * kLeverGap / r, &gap);
+    if (twice >= 0 && thrice >= 0) arm = 3 * arm - 3 * twice + thrice;
   }
   // No reading (the jaw opened by kLeverGap is apart by construction):
   // the actee's own distance.

@@ -274,6 +274,8 @@ TEST(Effects, PowerLawActeeFollowsItsLaw) {
   ASSERT_TRUE(s.blocked);
   const double delta = s.actee_compression;
   EXPECT_NEAR(s.actee_force, 3e5 * 0.0005 * std::pow(delta / 0.0005, 1.5) * 0.020 / (0.020 - delta), 1e-9);
+  // The load's lever arm: 40 mm, where the jaw touches the sphere (its
+  // centre's distance: the two tangents from the hinge are equally long).
   EXPECT_NEAR(s.effort_force * 0.150 * 0 + s.effort_force * std::abs(s.effort_distance),
               spring_torque(m, s.theta) + s.actee_force * 0.040, 1e-9);
 }

@@ -4,7 +4,9 @@
 // files are clear errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <fstream>
 
 #include "explore_json.h"
@@ -66,9 +68,19 @@ TEST(Explore, TheCrackingThresholdIsTheLeverWorkedOutByHand) {
   grid.efforts = 5;  // 0, 100, 200, 300, 400 N
   const Explorer e = make_explorer(shipped("nutcracker.yaml", {"walnut.yaml"}), grid);
   const ExploreResult r = explore(e, Shard{}, 2);
-  // The walnut at 55 mm, the thumb at 180 mm: the shell's 378 N needs
-  // 378 * 55 / 180 = 115.5 N at the thumb; the spring (about 0.09 N at the
+  // The walnut (an ellipsoid of semi-axes 18, 14.1, 14.1 mm) at 55 mm on the
+  // fixed jaw, the thumb at 180 mm. The moving jaw's face (through the hinge
+  // at theta, normal (-sin, cos)) touches it where r sin - b cos =
+  // sqrt(a^2 sin^2 + b^2 cos^2): theta_c = 0.52126 rad, and pushes there
+  // with the lever arm D = r cos + b sin - (a^2 - b^2) sin cos / that root
+  // = 51.151 mm (test_util.h), not 55. The shell's 378 N needs
+  // 378 D / 180 = 107.41 N at the thumb; the spring (about 0.09 N at the
   // thumb) and the pivot's friction (0.01 N*m / 0.18 m = 0.06 N) add a little.
+  const test::JawTouch touch = test::ellipsoid_under_jaw(0.018, 0.0141, 0.055, 30 * std::numbers::pi / 180);
+  const double lever = touch.lever;  // m
+  EXPECT_NEAR(touch.angle, 0.52126, 1e-5);
+  EXPECT_NEAR(lever, 0.051151, 1e-6);
+  const double needed = 378 * lever / 0.180;  // N
   const GridInfo& g = e.grid;
   ASSERT_DOUBLE_EQ(g.actees[0].placements[0], 0.055);
   ASSERT_DOUBLE_EQ(g.thumbs[1], 0.180);
@@ -83,12 +95,12 @@ TEST(Explore, TheCrackingThresholdIsTheLeverWorkedOutByHand) {
     if (t.to == crash) to_crash = &t;
   }
   ASSERT_NE(to_crash, nullptr);
-  EXPECT_GE(to_crash->effort, 115.5);
-  EXPECT_LE(to_crash->effort, 115.5 + 0.09 + 0.06 + g.tolerance + 0.3);
+  EXPECT_GE(to_crash->effort, needed);
+  EXPECT_LE(to_crash->effort, needed + 0.09 + 0.06 + g.tolerance + 0.3);
   EXPECT_LE(to_crash->effort - to_crash->below, g.tolerance);
   EXPECT_GT(to_crash->at.broke_at, 0);
-  EXPECT_NEAR(s->mechanical_advantage, 180.0 / 55.0, 1e-12);
-  EXPECT_NEAR(s->lever_effort_at_limit, 115.5 + 0.09, 0.05);
+  EXPECT_NEAR(s->mechanical_advantage, 0.180 / lever, 1e-9);
+  EXPECT_NEAR(s->lever_effort_at_limit, needed + 0.09, 0.05);
 }
 
 TEST(Explore, AWeakGraspNeverCracksAndTheSummarySaysSo) {

@@ -413,7 +413,8 @@ TEST(GapErrors, AnEffectOfTheMeasurementIsChecked) {
 TEST(Gap, ByForceTheContactAndTheBreakComeWhenMeasured) {
   // The nutcracker closes on the walnut at 60 mm (1 deg/s after 0.2 s):
   // the effort by moment balance written out here, the walnut's force
-  // k*d*h/(h-d) along the arc, broken at its 378 N. Replayed by force, the
+  // k*d*h/(h-d) along the arc where the jaw touches it (56.38 mm from the
+  // hinge, test_util.h), broken at its 378 N. Replayed by force, the
   // nominal model touches and cracks it when the trace says, to a frame.
   const fs::path dir = scratch("events");
   const Measurement probe = [&] {
@@ -424,7 +425,8 @@ TEST(Gap, ByForceTheContactAndTheBreakComeWhenMeasured) {
   }();
   const Model model = compile_measurement(probe);
   const auto state = make_state(model);
-  const double a = 0.060, h = state->actee_thickness, theta_c = state->contact_angle;
+  const double a = test::ellipsoid_under_jaw(0.018, 0.0141, 0.060, 30 * kPi / 180).lever;
+  const double h = state->actee_thickness, theta_c = state->contact_angle;
   const double k = 250e3, sp = 0.010, rest = 30 * kPi / 180;
   std::string csv = "t,angle,effort_force,actee_force,broken\n";
   double contact_t = -1, break_t = -1;
@@ -462,19 +464,22 @@ TEST(GapReplay, EachSampleIsWeighedByTheAnglesNoiseThroughTheModelsSlope) {
   // The nutcracker on the walnut at 60 mm, held open, then 1 mm into the
   // shell. Off the walnut the model's slope is the spring's alone,
   // -2000 N/m * (10 mm)^2 = -0.2 N*m/rad; 1 mm in, the walnut's
-  // k h^2 / (h - d)^2 a^2 = 250 N/mm * (28.2 / 27.2)^2 * (60 mm)^2
-  // = 967.4 N*m/rad adds to it. With 1e-4 rad of angle noise read at
-  // 160 mm, that is 0.6047 N through the model against the effort
-  // sensor's 0.02 N: a weight of 0.02^2 / (0.02^2 + 0.6047^2) = 1.093e-3.
+  // k h^2 / (h - d)^2 D^2 = 250 N/mm * (28.2 / 27.2)^2 * (56.378 mm)^2
+  // = 854.13 N*m/rad adds to it, D where the jaw touches it (test_util.h).
+  // With 1e-4 rad of angle noise read at 160 mm, that is 0.5340 N through
+  // the model against the effort sensor's 0.02 N: a weight of
+  // 0.02^2 / (0.02^2 + 0.5340^2) = 1.401e-3.
   const fs::path dir = scratch("weights");
   write(dir / "x.csv", good_csv());
   write(dir / "m.yaml", kHead + "actee: {file: " + kSource + "/actees/walnut.yaml, at: 60 mm}\n"
                         "effort_at: 160 mm\ntrace: x.csv\n");
   const Model model = compile_measurement(load_measurement((dir / "m.yaml").string()));
   const double theta_c = make_state(model)->contact_angle;
+  const double lever = test::ellipsoid_under_jaw(0.018, 0.0141, 0.060, 30 * kPi / 180).lever;
+  EXPECT_NEAR(lever, 0.056378, 1e-6);
   std::string csv = "t,angle,effort_force,actee_force\n";
   for (int i = 0; i < 100; ++i) {
-    csv += std::to_string(i * 1e-3) + "," + std::to_string(i < 50 ? theta_c + 0.1 : theta_c - 0.001 / 0.060) + ",1,0\n";
+    csv += std::to_string(i * 1e-3) + "," + std::to_string(i < 50 ? theta_c + 0.1 : theta_c - 0.001 / lever) + ",1,0\n";
   }
   write(dir / "x.csv", csv);
   std::vector<Replay> replays = replay_lever(model, load_measurement((dir / "m.yaml").string()));
@@ -482,12 +487,12 @@ TEST(GapReplay, EachSampleIsWeighedByTheAnglesNoiseThroughTheModelsSlope) {
   Replay& r = replays[0];
   EXPECT_NEAR(r.slope[10], -0.2, 1e-9);
   EXPECT_NEAR(r.deflection[80], 0.001, 1e-6);  // to_string's six decimals of the angle
-  EXPECT_NEAR(r.slope[80], -0.2 - 967.4, 0.5);
+  EXPECT_NEAR(r.slope[80], -0.2 - 854.13, 0.5);
   EXPECT_EQ(r.weight[80], 1.0);  // until weighed
   r.x_noise = 1e-4;
   weigh(replays, 0.02);
   EXPECT_NEAR(r.weight[10], 1 - 3.9e-5, 1e-6);
-  EXPECT_NEAR(r.weight[80], 1.093e-3, 2e-6);
+  EXPECT_NEAR(r.weight[80], 1.401e-3, 2e-6);
 }
 
 TEST(Gap, AProbeFindsTheLeverAndTheSpring) {

@@ -14,6 +14,7 @@
 
 #include "gjk.h"
 #include "stages.h"
+#include "test_util.h"
 
 namespace afford {
 namespace {
@@ -284,11 +285,9 @@ TEST(Gjk, AgreesWithFclOnRandomPoses) {
 // ellipsoid of semi-axes (a, b, b) centred at (r, b) below it when the
 // centre's depth under the plane equals the ellipsoid's reach along the
 // normal: r sin - b cos = sqrt(a^2 sin^2 + b^2 cos^2); their difference is
-// the gap. The jaw touches it at P = c + (-a^2 sin, b^2 cos) / h, h that
-// reach, and pushes along the normal: the load's lever arm about the hinge
-// is |P x n| = r cos + b sin - (a^2 - b^2) sin cos / h, short of r for an
-// ellipsoid long along the jaw (for a sphere, r: the tangent lengths from
-// the hinge are equal).
+// the gap. The jaw pushes it along that normal where it touches it: the
+// load's lever arm (test_util.h's ellipsoid_under_jaw) is short of r for
+// an ellipsoid long along the jaw.
 TEST(Gjk, ContactAngleOnAnEllipsoidIsTheTangentPlane) {
   const double a = 0.018, b = 0.0141;
   Model m;
@@ -320,9 +319,9 @@ TEST(Gjk, ContactAngleOnAnEllipsoidIsTheTangentPlane) {
     EXPECT_GE(excess(theta_c), -kExact) << "r = " << r;
     EXPECT_LE(excess(theta_c), 1e-11) << "r = " << r;
     EXPECT_TRUE(contacts[0].touching && contacts[1].touching);
-    const double s = std::sin(theta_c), c = std::cos(theta_c), h = std::hypot(a * s, b * c);
-    const double lever = r * c + b * s - (a * a - b * b) * s * c / h;
-    EXPECT_NEAR(load_distance, lever, 1e-8) << "r = " << r;
+    const test::JawTouch touch = test::ellipsoid_under_jaw(a, b, r, m.theta_max);
+    EXPECT_NEAR(theta_c, touch.angle, 1e-9) << "r = " << r;
+    EXPECT_NEAR(load_distance, touch.lever, 1e-9) << "r = " << r;
     EXPECT_LT(load_distance, r - 1e-3) << "r = " << r;
   }
 }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <exception>
 #include <string>
 
@@ -29,6 +30,26 @@ inline std::string replace_once(const std::string& text, const std::string& from
     return text;
   }
   return text.substr(0, at) + to + text.substr(at + from.size());
+}
+
+// An ellipsoid of semi-axes (a, b, b) (m), long along the jaws, resting on
+// the fixed jaw's face (y = 0) with its centre at (r, b), under a moving jaw
+// whose face passes through the hinge. Worked out by hand: the face at
+// theta (normal n = (-sin, cos)) touches it where the centre's depth under
+// it equals its reach along n, r sin - b cos = root = sqrt(a^2 sin^2 + b^2
+// cos^2) (found here by bisection in [0, theta_max]), at P = (r, b) +
+// (-a^2 sin, b^2 cos) / root, and pushes it along n with the lever arm
+// |P x n| = r cos + b sin - (a^2 - b^2) sin cos / root about the hinge.
+struct JawTouch {
+  double angle = 0;  // rad, theta_c
+  double lever = 0;  // m
+};
+inline JawTouch ellipsoid_under_jaw(double a, double b, double r, double theta_max) {
+  const auto excess = [&](double t) { return r * std::sin(t) - b * std::cos(t) - std::hypot(a * std::sin(t), b * std::cos(t)); };
+  double open = theta_max, closed = 0;  // apart at `open`, overlapping at `closed`
+  for (int i = 0; i < 200; ++i) (excess(0.5 * (open + closed)) > 0 ? open : closed) = 0.5 * (open + closed);
+  const double s = std::sin(open), c = std::cos(open), root = std::hypot(a * s, b * c);
+  return {open, r * c + b * s - (a * a - b * b) * s * c / root};
 }
 
 }  // namespace afford::test
