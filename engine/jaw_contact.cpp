@@ -148,7 +148,7 @@ JawFit find_contact_angle(const Model& m, const Eigen::Isometry3d& actee_in_obje
   // along the arm, but the jaw pushes where it touches: a sphere resting on
   // the fixed jaw is touched right at its centre's distance (the two
   // tangents from the hinge are equally long), an elongated nut is not (the
-  // walnut at 60 mm at 56.6 mm), and MuJoCo, which pushes at the contact,
+  // walnut at 60 mm at 56.4 mm), and MuJoCo, which pushes at the contact,
   // agrees. Read with the jaw opened by one, two and three kLeverGap, where
   // the nearest points and their normal are well defined, and extrapolated
   // to the touch: the error is third order in that opening.

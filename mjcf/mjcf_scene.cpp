@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "grasps.h"
+#include "stages.h"
 
 namespace afford {
 namespace {
@@ -116,6 +117,12 @@ const Keyframe* first_holding_grip(const Script& script) {
     if (k.grip && k.grasps) return &k;
   }
   return nullptr;
+}
+
+// m: the actee's extent across the jaws where the session places it (0 for
+// an actee that is not in them: the harness's law then only caps it).
+double actee_thickness(const Model& m) {
+  return m.has_actee ? thickness_across_jaws(m, m.object_start.inverse() * m.actee_start) : 0.0;
 }
 
 // A lower bound of the moving arm's inertia about the hinge: its mass at its
@@ -240,18 +247,24 @@ std::string mjcf_scene(const CompiledSession& session) {
   x << "  What the harness must do (the <custom> numerics below):\n"
     << "  - reset to key 'start'; run frames of frame_time s, each of 'substeps' mj_step calls;\n";
   if (hand.present) {
-    x << "  - set ctrl[hand] to hand_schedule (pairs t s, angle rad) interpolated linearly in time;\n"
+    x << "  - before each step, set ctrl[hand] to hand_schedule (pairs t s, angle rad) interpolated\n"
+      << "    linearly in time, at the step's end;\n"
       << "    a keyframe where the hand does not hold the tool commands theta_max (no push);\n";
   }
   x << "  - add the progressive spring to qfrc_applied of the hinge before each step:\n"
     << "    d = spring_arm (springref - theta); if d > 0, torque = spring_cubic d^3 spring_arm (opening);\n"
     << "  - add gravity_extra: torque = -gravity_extra cos(theta) (0 unless the gravity effect is on);\n";
   if (m.has_actee) {
-    x << "  - the actee's load is the normal force of its contacts with the moving arm (mj_contactForce);\n"
+    x << "  - before each step, set the solref of every geom to the actee's law's secant stiffness at\n"
+      << "    the deflection d across the jaws (the penetrations of its contacts at the last step):\n"
+      << "    solref (-k s, -b sqrt(s)), s = (d / actee_reference)^(actee_exponent - 1) h / (h - d),\n"
+      << "    h = actee_thickness, so that the contacts push with the law F = K d_r (d/d_r)^n h/(h - d)\n"
+      << "    (actees/README.md) and not the linear K d;\n"
+      << "  - the actee's load is the normal force of its contacts with the moving arm (mj_contactForce);\n"
       << "    when actee_breaks is 1 and the load passes actee_limit N, it breaks: set the conaffinity of\n"
       << "    geom 'actee' to 0 (no more contacts), as the engine's broken actee resists no more;\n"
-      << "    with actee_breaks 0 it never breaks. The contact is linear; actee_exponent and\n"
-      << "    actee_reference (the actee_compliance effect, 1 and 0 when off) are for reference only.\n";
+      << "    with actee_breaks 0 it never breaks. actee_exponent and actee_reference are the\n"
+      << "    actee_compliance effect's (1 and 0 when it is off).\n";
   }
   x << "-->\n";
 
@@ -282,6 +295,7 @@ std::string mjcf_scene(const CompiledSession& session) {
     x << "    " << numeric("actee_limit", {m.actee_limit}) << "\n"
       << "    " << numeric("actee_breaks", {m.actee_breaks ? 1.0 : 0.0}) << "\n"
       << "    " << numeric("actee_stiffness", {m.actee_stiffness}) << "\n"
+      << "    " << numeric("actee_thickness", {actee_thickness(m)}) << "\n"
       << "    " << numeric("actee_exponent", {m.actee_exponent}) << "\n"
       << "    " << numeric("actee_reference", {m.actee_reference}) << "\n";
   }

@@ -1,5 +1,6 @@
 #include "mujoco_harness.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -31,6 +32,11 @@ MujocoScene::MujocoScene(const CompiledSession& session) {
     affinity_ = m_->geom_conaffinity[actee_geom_];
     limit_ = numeric("actee_limit");
     breaks_ = numeric("actee_breaks") != 0;
+    thickness_ = numeric("actee_thickness");
+    exponent_ = numeric("actee_exponent");
+    reference_ = numeric("actee_reference");
+    stiffness_ = -m_->geom_solref[mjNREF * actee_geom_];
+    damping_ = -m_->geom_solref[mjNREF * actee_geom_ + 1];
   }
   if (hand_ >= 0) {
     const int id = mj_name2id(m_, mjOBJ_NUMERIC, "hand_schedule");
@@ -85,12 +91,39 @@ void MujocoScene::step() {
   const double d = spring_arm_ * (springref_ - th);  // m, the spring's compression
   const double progressive = d > 0 ? spring_cubic_ * d * d * d * spring_arm_ : 0.0;
   d_->qfrc_applied[m_->jnt_dofadr[hinge_]] = progressive - gravity_extra_ * std::cos(th);
+  if (actee_geom_ >= 0) actee_law();
   mj_step(m_, d_);
 }
 
+void MujocoScene::actee_law() {
+  if (!(thickness_ > 0)) return;
+  // The deflection across the jaws: the two contacts' penetrations, in
+  // series, at the last step.
+  double deflection = 0;  // m
+  for (int i = 0; i < d_->ncon; ++i) {
+    const mjContact& c = d_->contact[i];
+    if ((c.geom1 == actee_geom_ || c.geom2 == actee_geom_) && c.dist < 0) deflection -= c.dist;
+  }
+  // The law's secant stiffness over K: a contact of that stiffness pushes
+  // with the law's force at this deflection. Held below the thickness.
+  deflection = std::min(deflection, 0.99 * thickness_);
+  double secant = thickness_ / (thickness_ - deflection);
+  if (exponent_ != 1 && deflection > 0) secant *= std::pow(deflection / reference_, exponent_ - 1);
+  // The tool's geoms and the actee's take the same solref, so that
+  // MuJoCo's mix of the two is that one.
+  for (int g = 0; g < m_->ngeom; ++g) {
+    m_->geom_solref[mjNREF * g] = -stiffness_ * secant;
+    m_->geom_solref[mjNREF * g + 1] = -damping_ * std::sqrt(secant);
+  }
+}
+
 bool MujocoScene::frame() {
-  if (hand_ >= 0) d_->ctrl[hand_] = scheduled(d_->time);
-  for (int s = 0; s < substeps_; ++s) step();
+  // Each step aims where the schedule is at its end, as the engine's frame
+  // solves for where its sample puts the thumb at the frame's end.
+  for (int s = 0; s < substeps_; ++s) {
+    if (hand_ >= 0) d_->ctrl[hand_] = scheduled(d_->time + m_->opt.timestep);
+    step();
+  }
   if (actee_geom_ < 0 || !breaks_ || m_->geom_conaffinity[actee_geom_] == 0) return false;
   if (actee_load() <= limit_) return false;
   drop_actee();

@@ -1,7 +1,8 @@
 // An exported scene (mjcf_scene.h) run in MuJoCo as its header comment
 // asks: the hand's commanded angle from the schedule, the progressive
-// spring and gravity's extra torque applied to the hinge, the actee broken
-// (its contacts dropped) past its limit. The tests and the benchmark use
+// spring and gravity's extra torque applied to the hinge, the actee's
+// contacts as stiff as its law's secant at their deflection, the actee
+// broken (its contacts dropped) past its limit. The tests and the benchmark use
 // it; built only where CMake finds MuJoCo (afford_mjcf_mujoco).
 #pragma once
 
@@ -35,8 +36,9 @@ class MujocoScene {
   int substeps() const { return substeps_; }  // mj_step calls a frame
   double duration() const;               // s, the script's last keyframe (0 without a hand)
 
-  // One mj_step with the torques MJCF cannot say: the progressive spring
-  // and gravity's extra torque.
+  // One mj_step with what MJCF cannot say: the progressive spring and
+  // gravity's extra torque on the hinge, and the actee's law (terms.h
+  // actee_force_law) as its contacts' stiffness.
   void step();
   // One frame: the schedule's command, `substeps` steps, then the actee
   // breaks if its load passed its limit (and it breaks). True when it
@@ -51,6 +53,7 @@ class MujocoScene {
 
  private:
   double numeric(const char* name) const;
+  void actee_law();  // the actee's contacts' stiffness for the deflection they have
 
   mjModel* m_ = nullptr;
   mjData* d_ = nullptr;
@@ -61,6 +64,9 @@ class MujocoScene {
   double springref_ = 0, spring_arm_ = 0, spring_cubic_ = 0, gravity_extra_ = 0;
   double limit_ = 0;
   bool breaks_ = false;
+  // The actee's law: F = K d_r (d / d_r)^n h / (h - d) at a deflection d
+  // across the jaws; its contacts' direct solref (-k, -b) at K.
+  double thickness_ = 0, exponent_ = 1, reference_ = 0, stiffness_ = 0, damping_ = 0;
 };
 
 }  // namespace afford
