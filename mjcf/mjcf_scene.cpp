@@ -119,8 +119,8 @@ const Keyframe* first_holding_grip(const Script& script) {
   return nullptr;
 }
 
-// m: the actee's extent across the jaws where the session places it (0 for
-// an actee that is not in them: the harness's law then only caps it).
+// m: the actee's extent across the jaws (the object's y axis) where the
+// session places it; 0 without an actee.
 double actee_thickness(const Model& m) {
   return m.has_actee ? thickness_across_jaws(m, m.object_start.inverse() * m.actee_start) : 0.0;
 }
