@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 #include "number_format.h"
 
@@ -29,12 +30,6 @@ char* put_fixed6(char* p, char* end, double v) {
   return p;
 }
 
-char* put_general9(char* p, char* end, double v) {
-  p = write_general(p, end, v, 9);
-  *p++ = ',';
-  return p;
-}
-
 char* put_int(char* p, char* end, int v) {
   p = std::to_chars(p, end, v).ptr;
   *p++ = ',';
@@ -42,6 +37,23 @@ char* put_int(char* p, char* end, int v) {
 }
 
 }  // namespace
+
+char* TraceWriter::put_general9(char* p, char* end, double v, Written& last) {
+  // The same bits give the same text (bits, not ==: 0.0 and -0.0 print differently).
+  if (last.valid && std::memcmp(&v, &last.value, sizeof v) == 0) {
+    std::memcpy(p, last.text, last.size);
+    p += last.size;
+  } else {
+    char* const start = p;
+    p = write_general(p, end, v, 9);
+    last.size = static_cast<std::uint8_t>(p - start);
+    std::memcpy(last.text, start, last.size);
+    last.value = v;
+    last.valid = true;
+  }
+  *p++ = ',';
+  return p;
+}
 
 size_t TraceWriter::format_row(char* buf, size_t size, double t, double angle, double effort_force,
                                double actee_force, double effort_pos, int broken, int grasped, int held,
@@ -52,15 +64,15 @@ size_t TraceWriter::format_row(char* buf, size_t size, double t, double angle, d
   char* const end = buf + size;
   char* p = buf;
   p = put_fixed6(p, end, t);
-  p = put_general9(p, end, angle);
-  p = put_general9(p, end, effort_force);
-  p = put_general9(p, end, actee_force);
-  p = put_general9(p, end, effort_pos);
+  p = put_general9(p, end, angle, angle_);
+  p = put_general9(p, end, effort_force, effort_force_);
+  p = put_general9(p, end, actee_force, actee_force_);
+  p = put_general9(p, end, effort_pos, effort_pos_);
   p = put_int(p, end, broken);
   p = put_int(p, end, grasped);
   p = put_int(p, end, held);
   p = put_int(p, end, contacts);
-  p = put_general9(p, end, actee_load);
+  p = put_general9(p, end, actee_load, actee_load_);
   p[-1] = '\n';  // the last comma ends the row
   return static_cast<size_t>(p - buf);
 }

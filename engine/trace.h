@@ -27,6 +27,7 @@
 // (the rest), written without printf (number_format.h).
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -46,11 +47,23 @@ class TraceWriter : public Observer {
   // One row, newline included, into buf; returns its length. buf holds
   // kMaxRow characters.
   static constexpr size_t kMaxRow = 512;
-  static size_t format_row(char* buf, size_t size, double t, double angle, double effort_force, double actee_force,
-                           double effort_pos, int broken, int grasped, int held, int contacts, double actee_load);
+  size_t format_row(char* buf, size_t size, double t, double angle, double effort_force, double actee_force,
+                    double effort_pos, int broken, int grasped, int held, int contacts, double actee_load);
 
  private:
+  // The text of the last value written in each %.9g column: most values do
+  // not change from one row to the next (two thirds in paper-tongs), and a
+  // copy is cheaper than formatting them again.
+  struct Written {
+    double value = 0;
+    bool valid = false;
+    std::uint8_t size = 0;
+    char text[24] = {};
+  };
+  char* put_general9(char* p, char* end, double v, Written& last);
+
   std::FILE* out_;
+  Written angle_, effort_force_, actee_force_, effort_pos_, actee_load_;
 };
 
 class TimelineWriter : public Observer {

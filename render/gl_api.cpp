@@ -28,16 +28,16 @@ GlApi load() {
   }
   GlApi api{};
   api.Begin = find<decltype(api.Begin)>(lib, "glBegin");
-  api.BlendFunc = find<decltype(api.BlendFunc)>(lib, "glBlendFunc");
+  api.BlendFuncSeparate = find<decltype(api.BlendFuncSeparate)>(lib, "glBlendFuncSeparate");
   api.Clear = find<decltype(api.Clear)>(lib, "glClear");
   api.ClearColor = find<decltype(api.ClearColor)>(lib, "glClearColor");
-  api.Color3f = find<decltype(api.Color3f)>(lib, "glColor3f");
   api.Color4d = find<decltype(api.Color4d)>(lib, "glColor4d");
   api.Color4f = find<decltype(api.Color4f)>(lib, "glColor4f");
   api.ColorMaterial = find<decltype(api.ColorMaterial)>(lib, "glColorMaterial");
   api.CullFace = find<decltype(api.CullFace)>(lib, "glCullFace");
   api.DepthFunc = find<decltype(api.DepthFunc)>(lib, "glDepthFunc");
   api.DepthMask = find<decltype(api.DepthMask)>(lib, "glDepthMask");
+  api.DepthRange = find<decltype(api.DepthRange)>(lib, "glDepthRange");
   api.Disable = find<decltype(api.Disable)>(lib, "glDisable");
   api.DisableClientState = find<decltype(api.DisableClientState)>(lib, "glDisableClientState");
   api.DrawArrays = find<decltype(api.DrawArrays)>(lib, "glDrawArrays");
@@ -56,13 +56,11 @@ GlApi load() {
   api.MatrixMode = find<decltype(api.MatrixMode)>(lib, "glMatrixMode");
   api.MultMatrixf = find<decltype(api.MultMatrixf)>(lib, "glMultMatrixf");
   api.NormalPointer = find<decltype(api.NormalPointer)>(lib, "glNormalPointer");
-  api.PolygonOffset = find<decltype(api.PolygonOffset)>(lib, "glPolygonOffset");
   api.PopMatrix = find<decltype(api.PopMatrix)>(lib, "glPopMatrix");
   api.PushMatrix = find<decltype(api.PushMatrix)>(lib, "glPushMatrix");
   api.Scaled = find<decltype(api.Scaled)>(lib, "glScaled");
   api.ShadeModel = find<decltype(api.ShadeModel)>(lib, "glShadeModel");
   api.Translated = find<decltype(api.Translated)>(lib, "glTranslated");
-  api.Vertex2f = find<decltype(api.Vertex2f)>(lib, "glVertex2f");
   api.Vertex3d = find<decltype(api.Vertex3d)>(lib, "glVertex3d");
   api.VertexPointer = find<decltype(api.VertexPointer)>(lib, "glVertexPointer");
   api.Viewport = find<decltype(api.Viewport)>(lib, "glViewport");

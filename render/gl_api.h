@@ -12,16 +12,15 @@ namespace afford::render {
 struct GlApi {
   // OpenGL 1.x, the fixed-function calls the scene uses (glEnable -> Enable).
   decltype(&::glBegin) Begin;
-  decltype(&::glBlendFunc) BlendFunc;
   decltype(&::glClear) Clear;
   decltype(&::glClearColor) ClearColor;
-  decltype(&::glColor3f) Color3f;
   decltype(&::glColor4d) Color4d;
   decltype(&::glColor4f) Color4f;
   decltype(&::glColorMaterial) ColorMaterial;
   decltype(&::glCullFace) CullFace;
   decltype(&::glDepthFunc) DepthFunc;
   decltype(&::glDepthMask) DepthMask;
+  decltype(&::glDepthRange) DepthRange;
   decltype(&::glDisable) Disable;
   decltype(&::glDisableClientState) DisableClientState;
   decltype(&::glDrawArrays) DrawArrays;
@@ -40,16 +39,16 @@ struct GlApi {
   decltype(&::glMatrixMode) MatrixMode;
   decltype(&::glMultMatrixf) MultMatrixf;
   decltype(&::glNormalPointer) NormalPointer;
-  decltype(&::glPolygonOffset) PolygonOffset;
   decltype(&::glPopMatrix) PopMatrix;
   decltype(&::glPushMatrix) PushMatrix;
   decltype(&::glScaled) Scaled;
   decltype(&::glShadeModel) ShadeModel;
   decltype(&::glTranslated) Translated;
-  decltype(&::glVertex2f) Vertex2f;
   decltype(&::glVertex3d) Vertex3d;
   decltype(&::glVertexPointer) VertexPointer;
   decltype(&::glViewport) Viewport;
+  // OpenGL 1.4 (glext.h declares its type, not the function).
+  PFNGLBLENDFUNCSEPARATEPROC BlendFuncSeparate;
   // OSMesa (OSMesaCreateContextExt -> CreateContextExt).
   decltype(&::OSMesaCreateContextExt) CreateContextExt;
   decltype(&::OSMesaDestroyContext) DestroyContext;

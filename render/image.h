@@ -35,8 +35,10 @@ void blit(Image& dst, const Image& src, int x, int y);
 // An RGBA picture as OpenGL leaves it (width * height * 4 bytes, bottom row
 // first), turned top-down and averaged over factor x factor blocks
 // (supersampled anti-aliasing) in one pass: the picture comes out
-// width / factor by height / factor.
-Image from_gl_rgba(const std::uint8_t* rgba, int width, int height, int factor);
+// width / factor by height / factor. With `under` (of that size), the
+// colour is taken as premultiplied by its alpha and put over `under`;
+// without, the alpha is ignored.
+Image from_gl_rgba(const std::uint8_t* rgba, int width, int height, int factor, const Image* under = nullptr);
 
 // ---- the built-in 5x7 bitmap font: printable ASCII, one pixel of spacing;
 // g, p, q and y hang two pixels below the line (leave room under it)

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "backdrop.h"
 #include "gl_api.h"
 #include "mesh.h"
 
@@ -50,12 +51,6 @@ glm::mat4 projection_of(const Camera& c, double aspect, double near_m, double fa
 
 glm::vec3 vec(const Vector3d& v) { return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())}; }
 
-Vector3d usable_up(const Camera& c) {
-  const Vector3d view = (c.target - c.position).normalized();
-  if (c.up.cross(view).norm() > 1e-6) return c.up;
-  return std::abs(view.z()) < 0.9 ? Vector3d::UnitZ() : Vector3d::UnitY();
-}
-
 glm::mat4 view_of(const Camera& c) { return glm::lookAt(vec(c.position), vec(c.target), vec(usable_up(c))); }
 
 // Near and far planes around the target: generous, for the hand above the tool.
@@ -85,6 +80,12 @@ void push_pose(const Isometry3d& pose) {
 }
 
 }  // namespace
+
+Vector3d usable_up(const Camera& c) {
+  const Vector3d view = (c.target - c.position).normalized();
+  if (c.up.cross(view).norm() > 1e-6) return c.up;
+  return std::abs(view.z()) < 0.9 ? Vector3d::UnitZ() : Vector3d::UnitY();
+}
 
 Rgb actee_base_colour() {
   return {static_cast<std::uint8_t>(kActee.r * 255 + 0.5f), static_cast<std::uint8_t>(kActee.g * 255 + 0.5f),
@@ -173,25 +174,20 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
   const double scene = std::max(box.sizes().norm() / 2, 0.02);  // m, a length for markers and arrows
 
   gl().Viewport(0, 0, w, h);
+  // Translucent surfaces keep the picture's colour premultiplied by its
+  // alpha, the cover, for the backdrop to show through them.
+  gl().BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl().Disable(GL_DITHER);
-  gl().ClearColor(0, 0, 0, 1);
+  // Transparent where nothing is drawn: the backdrop (sky and ground) is
+  // put under the picture afterwards (backdrop.h).
+  gl().ClearColor(0, 0, 0, 0);
   gl().Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-
-  // Background: a soft vertical gradient.
-  gl().Disable(GL_DEPTH_TEST);
-  gl().Disable(GL_LIGHTING);
-  gl().MatrixMode(GL_PROJECTION);
-  gl().LoadIdentity();
-  gl().MatrixMode(GL_MODELVIEW);
-  gl().LoadIdentity();
-  gl().Begin(GL_QUADS);
-  gl().Color3f(0.80f, 0.84f, 0.89f);
-  gl().Vertex2f(-1, -1);
-  gl().Vertex2f(1, -1);
-  gl().Color3f(0.97f, 0.98f, 0.99f);
-  gl().Vertex2f(1, 1);
-  gl().Vertex2f(-1, 1);
-  gl().End();
+  // Contact markers and force arrows are drawn over the bodies they sit
+  // in: the scene takes the far half of the depth range, they and the hand
+  // the near half (a second clear of the depth buffer cost a full-screen
+  // pass).
+  const bool overlays = o.contacts || o.forces;
+  gl().DepthRange(overlays ? 0.5 : 0.0, 1.0);
 
   double near_m, far_m;
   clip_planes(camera, &near_m, &far_m);
@@ -232,40 +228,6 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
   gl().CullFace(GL_BACK);
   gl().EnableClientState(GL_VERTEX_ARRAY);
   gl().EnableClientState(GL_NORMAL_ARRAY);
-
-  // Ground: a pale plane with a grid, under everything.
-  if (o.ground) {
-    gl().Disable(GL_LIGHTING);
-    const double step = box.sizes().maxCoeff() > 0.4 ? 0.05 : 0.01;
-    const Vector3d c = box.center();
-    const double half = std::ceil(std::max(box.sizes().x(), box.sizes().y()) * 1.5 / step) * step;
-    const double x0 = std::floor((c.x() - half) / step) * step, y0 = std::floor((c.y() - half) / step) * step;
-    const double z = o.ground_z;
-    const int n = static_cast<int>(std::lround(2 * half / step));
-    gl().Enable(GL_POLYGON_OFFSET_FILL);
-    gl().PolygonOffset(1, 1);
-    gl().Disable(GL_CULL_FACE);
-    gl().Begin(GL_QUADS);
-    gl().Color3f(0.90f, 0.91f, 0.93f);
-    gl().Vertex3d(x0, y0, z);
-    gl().Vertex3d(x0 + n * step, y0, z);
-    gl().Vertex3d(x0 + n * step, y0 + n * step, z);
-    gl().Vertex3d(x0, y0 + n * step, z);
-    gl().End();
-    gl().Disable(GL_POLYGON_OFFSET_FILL);
-    gl().LineWidth(static_cast<float>(ss));
-    gl().Begin(GL_LINES);
-    gl().Color3f(0.76f, 0.79f, 0.84f);
-    for (int i = 0; i <= n; ++i) {
-      gl().Vertex3d(x0 + i * step, y0, z);
-      gl().Vertex3d(x0 + i * step, y0 + n * step, z);
-      gl().Vertex3d(x0, y0 + i * step, z);
-      gl().Vertex3d(x0 + n * step, y0 + i * step, z);
-    }
-    gl().End();
-    gl().Enable(GL_CULL_FACE);
-    gl().Enable(GL_LIGHTING);
-  }
 
   // The acting object: every part on its arm.
   const Isometry3d moving = s.object_pose * moving_arm_pose(s.theta);
@@ -341,7 +303,6 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
     }
     gl().End();
     gl().Enable(GL_BLEND);
-    gl().BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     gl().DepthMask(GL_FALSE);
     gl().Begin(GL_TRIANGLES);
     for (const GuideMesh& mesh : g.meshes) {
@@ -371,7 +332,7 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
   }
 
   // Contact points and force arrows (drawn over the bodies they sit in).
-  if (o.contacts || o.forces) gl().Clear(GL_DEPTH_BUFFER_BIT);
+  if (overlays) gl().DepthRange(0.0, 0.5);
   if (o.contacts) {
     const double r = scene * 0.022;
     auto markers = [&](const ContactSet& set, const Colour& c) {
@@ -420,7 +381,6 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
   // The hand, translucent, last: the palm box and straight fingers to the tips.
   if (o.hand && m.has_agent) {
     gl().Enable(GL_BLEND);
-    gl().BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     gl().DepthMask(GL_FALSE);
     im.extra.clear();
     add_box(im.extra, kPalmSize, kPalmCentre);
@@ -442,7 +402,19 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
   gl().DisableClientState(GL_NORMAL_ARRAY);
   gl().Finish();
 
-  Image out = from_gl_rgba(im.buffer.data(), w, h, ss);
+  // Ground: a pale square with a grid, under everything.
+  Ground ground;
+  if (o.ground) {
+    ground.step = box.sizes().maxCoeff() > 0.4 ? 0.05 : 0.01;
+    const Vector3d c = box.center();
+    const double half = std::ceil(std::max(box.sizes().x(), box.sizes().y()) * 1.5 / ground.step) * ground.step;
+    ground.x0 = std::floor((c.x() - half) / ground.step) * ground.step;
+    ground.y0 = std::floor((c.y() - half) / ground.step) * ground.step;
+    ground.z = o.ground_z;
+    ground.cells = static_cast<int>(std::lround(2 * half / ground.step));
+  }
+  const Image under = Backdrop(camera, o.width, o.height, o.ground ? &ground : nullptr).draw();
+  Image out = from_gl_rgba(im.buffer.data(), w, h, ss, &under);
   // Guide labels, at their anchors, moved down past the ones already placed.
   std::vector<Eigen::AlignedBox2i> placed;
   for (const GuideLabel& l : labels) {

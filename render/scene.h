@@ -48,6 +48,9 @@ struct RenderOptions {
   const Guides* guides = nullptr;
 };
 
+// The camera's up, or another when it is parallel to the view.
+Eigen::Vector3d usable_up(const Camera& camera);
+
 // World box of the tool (every part at the state's angle) and the actee.
 Eigen::AlignedBox3d scene_box(const Model& model, const State& state);
 

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "errors.h"
+#include "backdrop.h"
 #include "guides.h"
 #include "plot.h"
 #include "png.h"
@@ -167,6 +168,70 @@ TEST(RenderImage, GlPixelsAreFlippedAndAveraged) {
   EXPECT_EQ(half.at(0, 0), (render::Rgb{53, 3, 4}));   // (0 + 10 + 100 + 101) / 4 = 52.75; (1+1+5+5)/4 = 3
   EXPECT_EQ(half.at(1, 0), (render::Rgb{102, 3, 4}));  // (20 + 30 + 102 + 255) / 4 = 101.75
   EXPECT_THROW(render::from_gl_rgba(rgba.data(), 4, 2, 5), std::invalid_argument);
+}
+
+// The colour is premultiplied by the alpha, the cover: C + (1 - A) B.
+TEST(RenderImage, PremultipliedPictureIsPutOverTheBackdrop) {
+  // 3 x 1: nothing drawn, opaque, and half covered by 50 (premultiplied).
+  const std::vector<std::uint8_t> rgba = {0, 0, 0, 0, 10, 20, 30, 255, 50, 50, 50, 128};
+  const Image under(3, 1, {200, 100, 0});
+  const Image one = render::from_gl_rgba(rgba.data(), 3, 1, 1, &under);
+  EXPECT_EQ(one.at(0, 0), (render::Rgb{200, 100, 0}));
+  EXPECT_EQ(one.at(1, 0), (render::Rgb{10, 20, 30}));
+  // 50 + 127 / 255 of (200, 100, 0): 149.6, 99.8, 50 (rounded from 150.1, 100.3, 50.5 with the half)
+  EXPECT_EQ(one.at(2, 0), (render::Rgb{150, 100, 50}));
+  // A 2 x 2 block, half of it opaque grey 100: half of 100 over 200 is 150.
+  const std::vector<std::uint8_t> block = {0, 0, 0, 0, 100, 100, 100, 255, 100, 100, 100, 255, 0, 0, 0, 0};
+  const Image grey(1, 1, {200, 200, 200});
+  EXPECT_EQ(render::from_gl_rgba(block.data(), 2, 2, 2, &grey).at(0, 0), (render::Rgb{150, 150, 150}));
+  EXPECT_THROW(render::from_gl_rgba(block.data(), 2, 2, 1, &grey), std::invalid_argument);  // not 2 x 2
+}
+
+// A camera 1 m above the ground looking straight down, tan(fov / 2) = 0.5,
+// 100 x 100 pixels: pixel (x, y) sees the ground at x_w = (2x + 1) / 200 - 0.5,
+// y_w = 0.5 - (2y + 1) / 200, 1 cm a pixel. The square from -0.195 m, 4
+// cells of 0.1 m, has lines at x_w = -0.195, -0.095, 0.005, 0.105, 0.205,
+// through the centres of columns 30, 40, 50, 60 and 70, and of rows 69, 59,
+// 49, 39 and 29 for y_w = -0.195 ... 0.205.
+TEST(RenderBackdrop, GridLinesAndEdgesFallWhereTheyProject) {
+  render::Camera down;
+  down.position = Eigen::Vector3d(0, 0, 1);
+  down.target = Eigen::Vector3d::Zero();
+  down.fov = 2 * std::atan(0.5);
+  const render::Ground ground{0.0, -0.195, -0.195, 0.1, 4};
+  const Image img = render::Backdrop(down, 100, 100, &ground).draw();
+  const render::Rgb line{194, 201, 214}, plain{230, 232, 237};  // 255 (0.76, 0.79, 0.84) and (0.90, 0.91, 0.93)
+  for (int x : {30, 40, 50, 60, 70}) EXPECT_EQ(img.at(x, 45), line) << "column " << x;
+  for (int y : {29, 39, 49, 59, 69}) EXPECT_EQ(img.at(45, y), line) << "row " << y;
+  for (int x : {31, 45, 49, 51, 69}) EXPECT_EQ(img.at(x, 45), plain) << "column " << x;  // a pixel or more off
+  // Outside the square (a pixel past the border line and more) the sky:
+  // at row 45 its gradient is 0.545 of the way from (0.80, 0.84, 0.89) to (0.97, 0.98, 0.99).
+  const render::Rgb sky{228, 234, 241};  // 255 (0.89265, 0.9163, 0.9445) = (227.6, 233.7, 240.8)
+  for (int x : {0, 29, 71, 99}) EXPECT_EQ(img.at(x, 45), sky) << "column " << x;
+  // Half a pixel off a line (x_w = 0.01: column 50.5), half its colour: a
+  // camera moved 5 mm puts a line there between columns 50 and 51.
+  down.position.x() = down.target.x() = -0.005;
+  const Image half = render::Backdrop(down, 100, 100, &ground).draw();
+  EXPECT_EQ(half.at(50, 45), (render::Rgb{212, 217, 226})) << "(230 + 194) / 2, (232 + 201) / 2, (237 + 214) / 2";
+  EXPECT_EQ(half.at(51, 45), (render::Rgb{212, 217, 226}));
+}
+
+// Looking level from 1 m up: the upper half sees only sky, the lower half the ground.
+TEST(RenderBackdrop, NothingOfTheGroundAboveTheHorizon) {
+  render::Camera level;
+  level.position = Eigen::Vector3d(0, 0, 1);
+  level.target = Eigen::Vector3d(1, 0, 1);
+  const render::Ground ground{0.0, -50, -50, 1.0, 100};
+  const Image img = render::Backdrop(level, 64, 48, &ground).draw();
+  const Image sky_only = render::Backdrop(level, 64, 48, nullptr).draw();
+  for (int y = 0; y < 24; ++y) {
+    for (int x = 0; x < 64; ++x) ASSERT_EQ(img.at(x, y), sky_only.at(x, y)) << x << ", " << y;
+  }
+  // The bottom row looks down by 0.979 tan(20 deg): it meets the ground 2.81 m
+  // ahead, 0.19 m (1.6 pixels) from the line x = 3; column 40 is 0.36 m (8.5
+  // pixels) to the side of the line y = 0.
+  EXPECT_EQ(img.at(40, 47), (render::Rgb{230, 232, 237}));
+  EXPECT_NE(img.at(40, 47), sky_only.at(40, 47));
 }
 
 TEST(RenderFont, DrawsEveryPrintableCharacter) {
