@@ -117,8 +117,15 @@ Image Backdrop::draw() const {
     for (const Linear& f : lines_) {
       const double a = f.b * y + f.c;  // the distance in pixels is |a + f.a x|
       int from = xlo, to = xhi;
-      narrow(a + 1, f.a, true, &from, &to);
-      narrow(1 - a, -f.a, true, &from, &to);
+      if (std::abs(f.a) < 1e-12) {  // along the row: all of it or none
+        if (std::abs(a) >= 1) continue;
+      } else {  // the pixels where the distance is under one
+        const double u = (-1 - a) / f.a, v = (1 - a) / f.a;
+        const double first = std::max(std::min(u, v), xlo - 1.0), last = std::min(std::max(u, v), xhi + 1.0);
+        if (first > last) continue;
+        from = std::max(from, static_cast<int>(std::floor(first)) + 1);
+        to = std::min(to, static_cast<int>(std::ceil(last)) - 1);
+      }
       for (int x = from; x <= to; ++x) {
         const double cover = 1 - std::abs(a + f.a * x);
         std::uint8_t* p = row + 3 * x;
