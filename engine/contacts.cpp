@@ -4,6 +4,8 @@
 // the actee rests in the jaws, an FCL query otherwise. Agent-actee:
 // fingertips against the actee. Broad boxes first, so that far pairs cost
 // no query.
+#include <cstring>
+
 #include "stages.h"
 
 namespace afford {
@@ -11,12 +13,22 @@ namespace {
 
 // Every part's world pose and box at the solved angle, once a frame.
 void place_parts(const Model& m, State& s) {
+  // Most frames move neither the tool nor its arm (held still, or only
+  // the fingers move): the last placement stands.
+  const bool object_moved = !s.parts_placed || std::memcmp(s.object_pose.data(), s.parts_object_pose.data(),
+                                                           sizeof(double) * 16) != 0;
+  const bool arm_turned = object_moved || std::memcmp(&s.theta, &s.parts_theta, sizeof s.theta) != 0;
+  if (!arm_turned) return;
   s.moving_arm_world = s.object_pose * moving_arm_pose(s.theta);
   for (size_t i = 0; i < m.parts.size(); ++i) {
     const ModelPart& part = m.parts[i];
+    if (part.arm != Arm::moving && !object_moved) continue;
     s.part_pose[i] = (part.arm == Arm::moving ? s.moving_arm_world : s.object_pose) * part.in_arm;
     s.part_box[i] = world_box(part.geometry, s.part_pose[i]);
   }
+  s.parts_object_pose = s.object_pose;
+  s.parts_theta = s.theta;
+  s.parts_placed = true;
 }
 
 // A fingertip sphere's world box.

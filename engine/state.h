@@ -138,6 +138,12 @@ struct State {
   Eigen::Isometry3d moving_arm_world = Eigen::Isometry3d::Identity();  // the moving arm's frame, world, this frame
   std::vector<Eigen::Isometry3d> part_pose;  // per model part, world, this frame (sized once by reset())
   std::vector<WorldBox> part_box;            // their world boxes
+  // The object's pose and the angle the parts were last placed at: placed
+  // again only when one of them changed (bit for bit), the fixed arm's
+  // parts only when the object moved.
+  Eigen::Isometry3d parts_object_pose = Eigen::Isometry3d::Identity();
+  double parts_theta = 0;  // rad
+  bool parts_placed = false;
   std::unique_ptr<ContactQuery> query;
 };
 

@@ -275,6 +275,35 @@ TEST(Grip, FingersLandOnTheOuterFacesOfEveryPattern) {
   }
 }
 
+// The parts are placed again only when the tool moves or its arm turns
+// (contacts.cpp); at every frame of paper-tongs, which squeezes, carries and
+// rests, each part's pose is exactly what placing it afresh gives.
+TEST(Run, PartsArePlacedWhereTheToolAndItsAngleSay) {
+  const CompiledSession s = load_session(kSource + "/sessions/paper-tongs.yaml");
+  ScriptedAgent agent(s.script);
+  auto state = make_state(s.model);
+  Sample sample;
+  int moved = 0, still = 0;
+  Eigen::Isometry3d last_pose = state->object_pose;
+  double last_theta = state->theta;
+  for (std::int64_t k = 1; agent.sample_at(static_cast<double>(k) * s.model.timestep, &sample); ++k) {
+    sample.t = static_cast<double>(k) * s.model.timestep;
+    step(s.model, *state, sample);
+    const bool same = state->theta == last_theta && state->object_pose.isApprox(last_pose, 0.0);
+    (same ? still : moved) += 1;
+    last_pose = state->object_pose;
+    last_theta = state->theta;
+    const Eigen::Isometry3d moving = state->object_pose * moving_arm_pose(state->theta);
+    for (size_t i = 0; i < s.model.parts.size(); ++i) {
+      const ModelPart& part = s.model.parts[i];
+      const Eigen::Isometry3d fresh = (part.arm == Arm::moving ? moving : state->object_pose) * part.in_arm;
+      ASSERT_TRUE((state->part_pose[i].matrix().array() == fresh.matrix().array()).all()) << "frame " << k << " part " << i;
+    }
+  }
+  EXPECT_GT(moved, 1000);  // both kinds of frame were seen
+  EXPECT_GT(still, 1000);
+}
+
 TEST(Grip, SqueezeClosesTheFreeLeverByItsArc) {
   const Tool tool = tools_of_every_pattern()[0];  // type 2, thumb at 150 mm, opens to 50 deg
   // Still for 1 s (the grasp starts), then 30 mm in 1 s.
