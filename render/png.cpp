@@ -76,20 +76,29 @@ void unfilter(std::vector<std::uint8_t>& raw, size_t row, int h, size_t bpp) {
 
 std::vector<std::uint8_t> encode_png(const Image& img) {
   if (img.width <= 0 || img.height <= 0) throw PngError("cannot encode an empty image");
-  // The raw scanlines, each led by its filter byte (0: none).
+  // The scanlines, each led by its filter byte (0: none), given to zlib
+  // row by row from the image: no copy of the whole picture.
   const size_t row = static_cast<size_t>(img.width) * 3;
-  std::vector<std::uint8_t> raw;
-  raw.reserve((row + 1) * static_cast<size_t>(img.height));
-  for (int y = 0; y < img.height; ++y) {
-    raw.push_back(0);
-    const auto* p = img.rgb.data() + row * static_cast<size_t>(y);
-    raw.insert(raw.end(), p, p + row);
+  const size_t raw = (row + 1) * static_cast<size_t>(img.height);
+  std::vector<std::uint8_t> z(::compressBound(static_cast<uLong>(raw)));
+  z_stream zs{};
+  if (::deflateInit(&zs, kLevel) != Z_OK) throw PngError("zlib could not start compressing");
+  zs.next_out = z.data();
+  zs.avail_out = static_cast<uInt>(z.size());
+  std::uint8_t filter = 0;
+  int rc = Z_OK;
+  for (int y = 0; y < img.height && rc == Z_OK; ++y) {
+    zs.next_in = &filter;
+    zs.avail_in = 1;
+    rc = ::deflate(&zs, Z_NO_FLUSH);
+    zs.next_in = const_cast<std::uint8_t*>(img.rgb.data() + row * static_cast<size_t>(y));
+    zs.avail_in = static_cast<uInt>(row);
+    if (rc == Z_OK) rc = ::deflate(&zs, y + 1 == img.height ? Z_FINISH : Z_NO_FLUSH);
+    if (zs.avail_in != 0) rc = Z_BUF_ERROR;  // cannot happen within compressBound; never drop a row
   }
-  std::vector<std::uint8_t> z(::compressBound(static_cast<uLong>(raw.size())));
-  uLongf zn = static_cast<uLongf>(z.size());
-  if (::compress2(z.data(), &zn, raw.data(), static_cast<uLong>(raw.size()), kLevel) != Z_OK) {
-    throw PngError("zlib could not compress the image");
-  }
+  const size_t zn = zs.total_out;
+  ::deflateEnd(&zs);
+  if (rc != Z_STREAM_END) throw PngError("zlib could not compress the image");
 
   std::vector<std::uint8_t> out(kSignature, kSignature + 8);
   out.reserve(zn + 64);
