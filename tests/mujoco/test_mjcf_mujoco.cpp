@@ -181,14 +181,15 @@ TEST(MjcfMujoco, OpeningTorqueIsTheEffortForNoLoad) {
 // - the walnut's law seen in MuJoCo (its load at the penetration of its two
 //   contacts, which the walnut's turning in the jaws does not change; the
 //   harness sets the contacts to the law's secant stiffness) is the
-//   actee's within 5 % (measured 4.8 % softer: against the moving jaw the
-//   arm adds to the contact's effective mass);
+//   actee's within 5 % (measured 1.6 % stiffer: the load is the moving
+//   jaw's push, which is larger than the fixed jaw's where the jaws are not
+//   parallel; with MuJoCo's soft friction it was 4.8 % softer);
 // - MuJoCo's jaw pushes it where the engine's does: the lever arm (the
 //   torque over the load) is the engine's load distance, 56.4 mm and not
-//   the centre's 60 mm, within 1 % (measured 0.7 %: the walnut turns and
-//   slides a little in MuJoCo's jaws);
+//   the centre's 60 mm, within 1 % (measured 0.7 %: the walnut turns a
+//   little in MuJoCo's jaws);
 // - the torque the walnut takes about the hinge is the engine's within 5 %
-//   (measured 1.6 %).
+//   (measured 1.2 %).
 TEST(MjcfMujoco, ActeeLoadMatchesTheEngine) {
   const CompiledSession session = load_session(kSource + "/sessions/paper-nutcracker.yaml");
   const Model& m = session.model;
