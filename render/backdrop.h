@@ -23,6 +23,7 @@ struct Ground {
   double x0 = 0, y0 = 0;      // m, world: the square's corner of least x and y
   double step = 0.01;         // m between grid lines
   int cells = 1;              // grid cells along each side of the square
+  bool operator==(const Ground&) const = default;
 };
 
 class Backdrop {

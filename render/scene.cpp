@@ -144,6 +144,17 @@ struct Renderer::Impl {
   OSMesaContext ctx = nullptr;
   std::vector<unsigned char> buffer;  // RGBA, bottom row first
   Mesh shape, shards, extra, unit_sphere;
+  // The last backdrop and what it was drawn for: a session's pictures keep
+  // their camera and, while the tool stays, their ground.
+  struct BackdropKey {
+    Camera camera;
+    int width = 0, height = 0;
+    bool ground = false;
+    Ground square;
+    bool operator==(const BackdropKey&) const = default;
+  };
+  BackdropKey backdrop_key;
+  Image backdrop;
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
@@ -417,8 +428,12 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
     ground.z = o.ground_z;
     ground.cells = static_cast<int>(std::lround(2 * half / ground.step));
   }
-  const Image under = Backdrop(camera, o.width, o.height, o.ground ? &ground : nullptr).draw();
-  Image out = from_gl_rgba(im.buffer.data(), w, h, ss, &under);
+  const Impl::BackdropKey key{camera, o.width, o.height, o.ground, ground};
+  if (im.backdrop.width == 0 || !(key == im.backdrop_key)) {
+    im.backdrop = Backdrop(camera, o.width, o.height, o.ground ? &ground : nullptr).draw();
+    im.backdrop_key = key;
+  }
+  Image out = from_gl_rgba(im.buffer.data(), w, h, ss, &im.backdrop);
   // Guide labels, at their anchors, moved down past the ones already placed.
   std::vector<Eigen::AlignedBox2i> placed;
   for (const GuideLabel& l : labels) {

@@ -31,6 +31,7 @@ struct Camera {
   Eigen::Vector3d target = Eigen::Vector3d::Zero();          // m, world: looked at
   Eigen::Vector3d up = Eigen::Vector3d::UnitZ();              // world
   double fov = 0.6981317007977318;                            // rad, vertical (40 deg)
+  bool operator==(const Camera&) const = default;
 };
 
 struct RenderOptions {

@@ -254,6 +254,15 @@ TEST(RenderScene, IdenticalInputGivesIdenticalPixels) {
   const Image other = render_at(b, 2.0);
   EXPECT_EQ(render::encode_png(first), render::encode_png(again));
   EXPECT_EQ(render::encode_png(first), render::encode_png(other));
+  // A renderer keeps its last backdrop while the camera and the ground stay;
+  // another camera gets its own, as a fresh renderer draws it.
+  const std::unique_ptr<State> s = state_at(nutcracker(), 2.0);
+  render::Camera moved = test_camera(160.0 / 120);
+  moved.position += Eigen::Vector3d(0.03, 0.0, 0.05);
+  render::Renderer fresh;
+  const Image seen = a.render(nutcracker().model, *s, moved, small());
+  EXPECT_EQ(render::encode_png(seen), render::encode_png(fresh.render(nutcracker().model, *s, moved, small())));
+  EXPECT_NE(render::encode_png(seen), render::encode_png(first));
 }
 
 TEST(RenderScene, NutcrackerAtRestMatchesItsReference) {
