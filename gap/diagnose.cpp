@@ -460,6 +460,9 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     pt.computed = weights > 0;
     pt.rmse_nominal = weights > 0 ? std::sqrt(sq_nominal / weights) : 0.0;
     pt.rmse_alone = weights > 0 ? std::sqrt(sq_alone / weights) : 0.0;
+    // Each alone wants a power law: is its shape shared, with each
+    // specimen's stiffness its own?
+    if (pt.computed && pt.effect == EffectKind::actee_compliance) d.specimens = specimen_shape(fitter, replays);
   }
 
   // By force: what the effort makes of the angle and the actee, nominal

@@ -11,6 +11,7 @@
 #include "force_replay.h"
 #include "measurement.h"
 #include "replay.h"
+#include "specimens.h"
 
 namespace afford {
 
@@ -68,6 +69,7 @@ struct Diagnosis {
   std::string where;                               // one sentence
   ResidualTest residual;
   PerTrace per_trace;                              // with an unexplained verdict over several traces
+  SpecimenShape specimens;                         // and there, when each trace alone wants the actee's power law
   std::vector<ForceGap> by_force_before, by_force_after;  // lever: replayed by force, nominal and fitted
   std::vector<std::string> judged_on;              // traces (a single trace: its halves), each judged
   size_t folds = 0;                                // by a fit on the traces outside its fold

@@ -424,6 +424,41 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set) const {
   return out;
 }
 
+double Fitter::scaled_actee_rss(size_t i, double exponent, double* factor, double* wsum,
+                                std::vector<double>* residual) const {
+  const Replay& r = replays_[i];
+  const std::vector<double>& own = own_actee_[i];
+  const std::vector<double> law = exponent > 0 ? actee_term(model_, r, actee_, exponent, 1.0) : own;
+  // y = the measurement less everything but the actee's law; one column.
+  auto y_at = [&](size_t s) { return (r.measured[s] - (r.nominal[s] - own[s])) * r.to_newtons; };
+  double cc = 0, cy = 0, yy = 0, w = 0;
+  for (size_t s : fitted_[i]) {
+    const double c = law[s] * r.to_newtons, y = y_at(s);
+    cc += r.weight[s] * c * c;
+    cy += r.weight[s] * c * y;
+    yy += r.weight[s] * y * y;
+    w += r.weight[s];
+  }
+  const double f = cc > 0 ? cy / cc : 0.0;
+  *factor = f;
+  *wsum = w;
+  if (residual) {
+    residual->assign(r.t.size(), 0.0);
+    for (size_t s : fitted_[i]) (*residual)[s] = y_at(s) - f * law[s] * r.to_newtons;
+  }
+  return std::max(0.0, yy - f * cy);
+}
+
+double Fitter::shared_exponent(const std::vector<size_t>& on) const {
+  return minimise(
+      [&](double e) {
+        double sum = 0, f = 0, w = 0;
+        for (size_t i : on) sum += scaled_actee_rss(i, e, &f, &w);
+        return sum;
+      },
+      kMinExponent, kMaxExponent, 35);
+}
+
 std::vector<double> Fitter::residual(const SetFit& fit, size_t i) const {
   std::vector<double> base;
   std::vector<std::vector<double>> cols;

@@ -56,6 +56,18 @@ class Fitter {
   // The candidates that apply to this rig.
   std::vector<EffectKind> candidates() const;
 
+  // Specimens that differ in stiffness (several nuts of one kind): replay i
+  // alone, its actee's law times the factor that fits that trace best. The
+  // law is the actee's own when `exponent` is 0, else the power law of that
+  // exponent. Returns the weighted RSS (N^2); the factor (of the own law,
+  // or the power law's coefficient), the weights' sum and, if asked, each
+  // sample's residual (N, 0 where not fitted) through the pointers.
+  double scaled_actee_rss(size_t i, double exponent, double* factor, double* wsum,
+                          std::vector<double>* residual = nullptr) const;
+  // The power law's exponent that fits the replays `on` best, each with a
+  // factor of its own.
+  double shared_exponent(const std::vector<size_t>& on) const;
+
  private:
   struct Nonlinear {
     double delay = 0;      // s

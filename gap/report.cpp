@@ -84,6 +84,24 @@ std::string report_text(const Diagnosis& d) {
                   manifest_of(p.effect).name, p.rmse_nominal, p.rmse_alone, param.key, *lo, *hi);
     out += line;
   }
+  if (d.specimens.computed) {
+    const SpecimenShape& sp = d.specimens;
+    const auto [lo, hi] = std::minmax_element(sp.stiffness_factor.begin(), sp.stiffness_factor.end());
+    std::snprintf(line, sizeof line,
+                  "specimens: each trace given its own stiffness (%.3g to %.3g times the nominal), %s with the exponent "
+                  "fitted on the other traces (%.3g +/- %.2g on all) takes the held-out gap from %.4g N to %.4g N "
+                  "(shrink %.0f %%)\n",
+                  *lo, *hi, manifest_of(EffectKind::actee_compliance).name, sp.exponent, sp.exponent_sigma,
+                  sp.rmse_before, sp.rmse_after, 100 * sp.shrink);
+    out += line;
+    auto side = [](double v) { return v < 0 ? "below" : "above"; };
+    std::snprintf(line, sizeof line,
+                  "  with its own stiffness, the measured force lies %.4g N %s the nominal law over the first third of "
+                  "each trace's deflection%s and %.4g N %s it over the last%s\n",
+                  std::abs(sp.first_third), side(sp.first_third), sp.first_third < 0 ? " (a soft toe)" : "",
+                  std::abs(sp.last_third), side(sp.last_third), sp.last_third > 0 ? " (it stiffens)" : "");
+    out += line;
+  }
   for (size_t i = 0; i < d.by_force_before.size() && i < d.by_force_after.size(); ++i) {
     const ForceGap& b = d.by_force_before[i];
     const ForceGap& a = d.by_force_after[i];
@@ -165,6 +183,19 @@ std::string report_json(const Diagnosis& d) {
                       {"rmse_nominal", num(d.per_trace.rmse_nominal)},
                       {"rmse_alone", num(d.per_trace.rmse_alone)},
                       {"parameter", parameter}};
+  }
+  if (d.specimens.computed) {
+    const SpecimenShape& sp = d.specimens;
+    Json factors = Json::array();
+    for (double v : sp.stiffness_factor) factors.push_back(num(v));
+    j["specimens"] = {{"effect", manifest_of(EffectKind::actee_compliance).name},
+                      {"exponent", {{"value", num(sp.exponent)}, {"unit", ""}, {"uncertainty", num(sp.exponent_sigma)}}},
+                      {"stiffness_factor", factors},
+                      {"rmse_before", num(sp.rmse_before)},
+                      {"rmse_after", num(sp.rmse_after)},
+                      {"shrink", num(sp.shrink)},
+                      {"first_third", num(sp.first_third)},
+                      {"last_third", num(sp.last_third)}};
   }
   Json events = Json::array(), by_force = Json::array();
   for (size_t i = 0; i < d.by_force_before.size() && i < d.by_force_after.size(); ++i) {
