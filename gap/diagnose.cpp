@@ -9,7 +9,7 @@
 namespace afford {
 namespace {
 
-constexpr double kMatched = 1.3;        // a held-out RMSE within this factor of the noise is the noise
+constexpr double kMatched = 1.15;       // a held-out RMSE within this factor of the noise is the noise
 constexpr double kRealMargin = 0.05;    // an effect must cut the held-out RMSE by this fraction
 constexpr double kAiccMargin = 10;      // and the training AICc by this much
 constexpr double kSeparated = 3;        // a runner-up this many standard errors worse is told apart
@@ -318,20 +318,43 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   std::vector<EffectKind> library = options.library.empty() ? fitter.candidates() : options.library;
   const std::vector<EffectKind> applicable = fitter.candidates();
   std::erase_if(library, [&](EffectKind k) { return std::find(applicable.begin(), applicable.end(), k) == applicable.end(); });
+  // Which held-out samples have the actee deflected, in the order score()
+  // lists them, and their weight. An actee's stiffness passes the angle's
+  // noise into its prediction, so its samples weigh little: a gap there,
+  // many times their noise, would be lost in the RMSE over every sample.
+  // The actee's part is judged on its own. Between plates the actee is
+  // all there is.
+  std::vector<bool> judged_in_contact;
+  size_t contact_samples = 0;
+  for (size_t k = 0; k < folds; ++k) {
+    for (size_t i : judged[k]) {
+      const Replay& r = replays[i];
+      for (size_t s = 0; s < r.t.size(); ++s) {
+        if (!r.fitted[s]) continue;
+        const bool contact = m.rig == Rig::lever && r.deflection[s] > 0;
+        judged_in_contact.push_back(contact);
+        if (contact) ++contact_samples;
+      }
+    }
+  }
   // A set's parameters on every trace, its score on the folds, and its
   // squared error at every held-out sample (to tell two sets apart).
   struct Scored {
     SetFit fit;
     std::vector<double> sq;
+    // N, over the held-out samples in the actee's contact, each error
+    // scaled to the effort sensor's noise (times the root of its weight):
+    // pure noise gives the sensor's noise, however little the samples weigh.
+    double rmse_contact = 0;
   };
   auto score = [&](const std::vector<EffectKind>& set) {
-    Scored out{fitter.fit(set), {}};
+    Scored out{fitter.fit(set), {}, 0.0};
     SetFit& f = out.fit;
     double sq = 0, weights = 0;
     size_t n = 0;
     for (size_t k = 0; k < fold_fitters.size(); ++k) {
       const SetFit g = fold_fitters[k].fit(set);
-      f.valid = f.valid && g.valid;
+      f.valid = f.valid && f.writable && g.valid;  // the folds' laws need only be physical
       sq += g.rmse_test * g.rmse_test * g.w_test;
       weights += g.w_test;
       n += g.n_test;
@@ -345,19 +368,41 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     f.rmse_test = weights > 0 ? std::sqrt(sq / weights) : 0.0;
     f.n_test = n;
     f.w_test = weights;
+    double sq_contact = 0;
+    for (size_t j = 0; j < out.sq.size(); ++j) sq_contact += judged_in_contact[j] ? out.sq[j] : 0.0;
+    out.rmse_contact = contact_samples > 0 ? std::sqrt(sq_contact / static_cast<double>(contact_samples)) : 0.0;
     return out;
   };
 
-  const SetFit nominal = score({}).fit;
+  const Scored nominal_scored = score({});
+  const SetFit& nominal = nominal_scored.fit;
   d.rmse_before = nominal.rmse_test;
-  auto matched = [&](const SetFit& f) { return f.rmse_test <= kMatched * floor_of(f); };
-  SetFit current = nominal;
+  // Matched to the noise over every held-out sample, and over those in the
+  // actee's contact.
+  auto matched = [&](const Scored& f) {
+    const double floor = kMatched * floor_of(f.fit);
+    return f.fit.rmse_test <= floor && f.rmse_contact <= floor;
+  };
+  Scored current_scored = nominal_scored;
+  const SetFit& current = current_scored.fit;
   std::vector<EffectKind> chosen;
   bool ambiguous = false;
   char line[256];
-  std::snprintf(line, sizeof line, "nominal: held-out RMSE %.4g N (noise %.3g N)", nominal.rmse_test, d.noise);
-  d.steps.push_back(line);
-  if (!matched(nominal)) {
+  // Each step's held-out RMSE, and in the actee's contact where there is one.
+  auto step_line = [&](const std::string& what, const Scored& f) {
+    char text[160];
+    std::snprintf(text, sizeof text, " held-out RMSE %.4g N", f.fit.rmse_test);
+    std::string out = what + text;
+    if (contact_samples > 0) {
+      std::snprintf(text, sizeof text, " (in the actee's contact %.4g N, each error scaled to the sensor's noise)",
+                    f.rmse_contact);
+      out += text;
+    }
+    return out;
+  };
+  std::snprintf(line, sizeof line, " (noise %.3g N)", d.noise);
+  d.steps.push_back(step_line("nominal:", nominal_scored) + line);
+  if (!matched(nominal_scored)) {
     for (int step = 0; step < kMaxEffects; ++step) {
       std::vector<std::pair<Scored, EffectKind>> tried;
       for (EffectKind k : library) {
@@ -368,31 +413,50 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
         if (f.fit.valid) tried.emplace_back(std::move(f), k);
       }
       if (tried.empty()) break;
-      std::sort(tried.begin(), tried.end(), [](const auto& a, const auto& b) { return a.first.fit.rmse_test < b.first.fit.rmse_test; });
+      // Each candidate is judged where it acts: an effect of the actee
+      // where the jaws deflect it, the others over every sample. The best
+      // cuts the held-out RMSE there by the largest share.
+      auto in_contact = [&](EffectKind k) { return contact_samples > 0 && manifest_of(k).home == EffectHome::actee; };
+      auto rmse_in = [](const Scored& f, bool contact) { return contact ? f.rmse_contact : f.fit.rmse_test; };
+      auto share_cut = [&](const std::pair<Scored, EffectKind>& t) {
+        const bool contact = in_contact(t.second);
+        const double was = rmse_in(current_scored, contact);
+        return was > 0 ? 1 - rmse_in(t.first, contact) / was : 0.0;
+      };
+      std::stable_sort(tried.begin(), tried.end(), [&](const auto& a, const auto& b) { return share_cut(a) > share_cut(b); });
       const SetFit& best = tried.front().first.fit;
-      if (best.rmse_test > current.rmse_test * (1 - kRealMargin) || best.aicc > current.aicc - kAiccMargin) {
-        std::snprintf(line, sizeof line, "no further effect: the best, %s, would give %.4g N", manifest_of(tried.front().second).name,
-                      best.rmse_test);
-        d.steps.push_back(line);
+      const bool contact = in_contact(tried.front().second);
+      if (share_cut(tried.front()) < kRealMargin || best.aicc > current.aicc - kAiccMargin) {
+        d.steps.push_back(step_line(std::string("no further effect: the best, ") +
+                                        manifest_of(tried.front().second).name + ", would give",
+                                    tried.front().first));
         break;
       }
       // As good: a runner-up that cuts the held-out error nearly as far as
-      // the best and that the held-out samples do not tell apart from it
-      // (not significantly worse, sample by sample). The first alone is not
-      // enough where the best's cut lies in a few samples (an actee's
-      // contact): batch means that are mostly zero make a weak test.
-      const double cut = current.rmse_test * current.rmse_test - best.rmse_test * best.rmse_test;  // N^2
+      // the best, where the best acts, and that the held-out samples there
+      // do not tell apart from it (not significantly worse, sample by
+      // sample). The first alone is not enough where the best's cut lies
+      // in a few samples: batch means that are mostly zero make a weak test.
+      auto where = [&](const std::vector<double>& sq) {
+        if (!contact) return sq;
+        std::vector<double> out;
+        for (size_t j = 0; j < sq.size(); ++j) {
+          if (judged_in_contact[j]) out.push_back(sq[j]);
+        }
+        return out;
+      };
+      const double was = rmse_in(current_scored, contact);
+      auto cut_of = [&](const Scored& f) { return was * was - rmse_in(f, contact) * rmse_in(f, contact); };  // N^2
+      const double cut = cut_of(tried.front().first);
+      const std::vector<double> best_sq = where(tried.front().first.sq);
       std::vector<EffectKind> alike = {tried.front().second};
       for (size_t j = 1; j < tried.size(); ++j) {
-        const SetFit& other = tried[j].first.fit;
-        const double other_cut = current.rmse_test * current.rmse_test - other.rmse_test * other.rmse_test;
-        if (other_cut >= kNearlyAsFar * cut && paired_t(tried.front().first.sq, tried[j].first.sq) < kSeparated) {
+        if (cut_of(tried[j].first) >= kNearlyAsFar * cut && paired_t(best_sq, where(tried[j].first.sq)) < kSeparated) {
           alike.push_back(tried[j].second);
         }
       }
       chosen.push_back(tried.front().second);
-      std::snprintf(line, sizeof line, "+ %s: held-out RMSE %.4g N", manifest_of(tried.front().second).name, best.rmse_test);
-      d.steps.push_back(line);
+      d.steps.push_back(step_line(std::string("+ ") + manifest_of(tried.front().second).name + ":", tried.front().first));
       if (alike.size() > 1) {
         ambiguous = true;
         for (EffectKind k : alike) {
@@ -402,14 +466,21 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
         }
         d.steps.push_back("  as good: " + effects_text(alike));
       }
-      current = best;
-      if (matched(current)) break;
+      current_scored = tried.front().first;
+      if (matched(current_scored)) break;
     }
   }
   d.effects = current.effects;
   d.noise_through_model = floor_of(current);
   d.rmse_after = current.rmse_test;
-  d.shrink = d.rmse_before > 0 ? 1 - d.rmse_after / d.rmse_before : 0.0;
+  d.contact_samples = contact_samples;
+  d.contact_before = nominal_scored.rmse_contact;
+  d.contact_after = current_scored.rmse_contact;
+  // The shrink of the part in which the gap is the largest against its noise.
+  d.shrink_in_contact = contact_samples > 0 && d.contact_before > d.rmse_before;
+  const double was = d.shrink_in_contact ? d.contact_before : d.rmse_before;
+  const double now = d.shrink_in_contact ? d.contact_after : d.rmse_after;
+  d.shrink = was > 0 ? 1 - now / was : 0.0;
 
   // Residuals of every trace, before and after, each sample's in units of
   // the effort sensor's noise (times the square root of its weight), so
@@ -429,9 +500,9 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   d.curves = held_out_curves(replays, fitter, nominal, fold_fitters, judged, chosen);
   what_it_follows(replays, after, &d.residual.follows, &d.residual.correlation);
 
-  if (matched(nominal)) {
+  if (matched(nominal_scored)) {
     d.verdict = Verdict::none;
-  } else if (chosen.empty() || !(matched(current) || d.residual.white)) {
+  } else if (chosen.empty() || !(matched(current_scored) || d.residual.white)) {
     d.verdict = Verdict::unexplained;
   } else {
     d.verdict = ambiguous ? Verdict::ambiguous : Verdict::explained;

@@ -64,7 +64,15 @@ struct Diagnosis {
   double noise = 0;                                // N, the measurement's own noise, estimated
   double noise_through_model = 0;                  // N, with the motion's noise through the adopted model
   double rmse_before = 0, rmse_after = 0;          // N, on the held-out traces
-  double shrink = 0;                               // 1 - after / before, held out
+  double shrink = 0;                               // 1 - after / before, held out, where the gap is the larger (below)
+  // In the actee's contact, where there is one: the held-out RMSE with each
+  // sample's error scaled to the effort sensor's noise (times the root of
+  // its weight: pure noise gives the sensor's noise), N, before and after.
+  size_t contact_samples = 0;
+  double contact_before = 0, contact_after = 0;
+  // `shrink` is measured where the gap is the larger against the noise
+  // (both in the sensor's units): over every sample, or in the contact.
+  bool shrink_in_contact = false;
   std::vector<PhaseShare> phases;
   std::string where;                               // one sentence
   ResidualTest residual;

@@ -411,7 +411,7 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set) const {
     e.sigma[1] = std::abs(best.exponent - 1) < 1e-6 || !(c > 0)
                      ? 0.0
                      : e.value[1] * std::abs(best_sigma.back() / c / (1 - best.exponent));
-    if (!(e.value[1] > 0 && e.value[1] <= 1)) out.valid = false;
+    if (!(e.value[1] > 0 && e.value[1] <= 1)) out.writable = false;
     out.effects.push_back(e);
   }
   if (latency) {

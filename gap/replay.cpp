@@ -14,6 +14,7 @@ constexpr double kReversalWindow = 0.02; // s: samples this near a change of dir
 constexpr double kReversalSpeed = 0.2;  // of the peak speed: a reversal lasts until the speed is back above this
 constexpr double kLimitBand = 1e-3;      // rad: this near an angle limit counts as at it
 constexpr double kSignWidth = 1e-3;      // rad/s: friction's sign turns over this speed
+constexpr double kHeldBand = 0.1;        // friction's band below this share of a sample's noise does not matter
 
 // x, its rate and acceleration, and their noise: white noise of deviation
 // s gives second differences of deviation s * sqrt(6), which a smooth
@@ -38,7 +39,10 @@ Derivatives differentiate(Replay& r) {
 // which samples are at a limit and after the break.
 // `edge` samples at either end are not fitted: there the rates are
 // extrapolated from one side, which misses a start's transient.
-void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vector<bool>& broken, size_t edge) {
+// `friction`: the model's friction, in the main signal's unit (N*m about
+// the fulcrum; 0 for plates).
+void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vector<bool>& broken, size_t edge,
+                   double friction) {
   // A lever closes as its angle falls; plates load as their displacement grows.
   const double closing = r.rig == Rig::lever ? -1.0 : 1.0;
   const size_t n = r.t.size();
@@ -80,13 +84,20 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
     for (size_t i = from; i < to; ++i) r.phase[i] = Phase::reversal;
   }
   for (size_t i = 0; i < n; ++i) {
+    // Squeezed and all but still: the effort loads a stiff actee while the
+    // angle hardly moves, so the rate is the noise's and friction may take
+    // any value up to its limit. Where that band is a small share of what
+    // the angle's own noise passes into the prediction through the actee's
+    // stiffness, the sample still tells the actee's law by its deflection.
+    const bool held = r.deflection[i] > 0 && friction < kHeldBand * std::abs(r.slope[i]) * r.x_noise;
+    const bool moving = std::abs(r.rate[i]) > still && r.phase[i] != Phase::reversal;
+    if (held && !moving) r.phase[i] = closing * r.rate[i] > 0 ? Phase::loading : Phase::unloading;
     if (at_limit[i]) r.phase[i] = Phase::at_limit;
     if (broken[i]) r.phase[i] = Phase::after_break;
     // A limit's reaction, a broken actee, and friction at rest and while it
     // turns over at a reversal are outside what the model predicts from
     // the motion: reported, not fitted or scored.
-    r.fitted[i] = !at_limit[i] && !broken[i] && std::abs(r.rate[i]) > still && r.phase[i] != Phase::reversal &&
-                  i >= edge && i + edge < n;
+    r.fitted[i] = !at_limit[i] && !broken[i] && (moving || held) && i >= edge && i + edge < n;
   }
 }
 
@@ -171,6 +182,13 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       const double deflection = actee ? std::max(0.0, a * (state->contact_angle - theta)) : 0.0;
       double slope = 0;
       const double actee_force = actee_force_law(model, deflection, state->actee_thickness, &slope);
+      // Within three of the angle's noise of the actee, that noise may put
+      // the jaws on it: the prediction then follows the actee's stiffness,
+      // as far as the noise could press it.
+      if (actee && deflection == 0) {
+        const double reach = a * (state->contact_angle - theta + 3 * r.x_noise);
+        if (reach > 0) actee_force_law(model, reach, state->actee_thickness, &slope);
+      }
       // Coulomb friction against the motion; a smooth sign near rest, where
       // the motion alone cannot say which way friction holds.
       const double friction = -model.friction_torque * smooth_sign(omega);
@@ -196,7 +214,7 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       r.nominal = delayed(r.t, r.nominal, model.sensor_latency);
     }
     // Within the fit's half-width of either end the rates are one-sided.
-    assign_phases(r, at_limit, broken, d.half_width);
+    assign_phases(r, at_limit, broken, d.half_width, model.friction_torque);
     out.push_back(std::move(r));
   }
   return out;
@@ -236,7 +254,7 @@ std::vector<Replay> replay_plates(const Model& model, const Measurement& m) {
       r.slope[i] = slope;
       broken[i] = i >= rupture;
     }
-    assign_phases(r, at_limit, broken, 0);  // the plates' law needs no rates
+    assign_phases(r, at_limit, broken, 0, 0.0);  // the plates' law needs no rates, and has no friction
     out.push_back(std::move(r));
   }
   return out;

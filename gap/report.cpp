@@ -38,10 +38,21 @@ std::string si_quantity(double si, const EffectParam& p) {
 std::string report_text(const Diagnosis& d) {
   std::string out = "measurement " + d.measurement + ": verdict " + verdict_name(d.verdict) + "\n";
   char line[512];
+  auto shrink_of = [](double before, double after) { return before > 0 ? 100 * (1 - after / before) : 0.0; };
   std::snprintf(line, sizeof line,
                 "held-out RMSE %.4g N before, %.4g N after (shrink %.0f %%; each sample weighed by its noise); noise "
                 "about %.3g N, %.3g N with the motion's noise through the model\n",
-                d.rmse_before, d.rmse_after, 100 * d.shrink, d.noise, d.noise_through_model);
+                d.rmse_before, d.rmse_after, shrink_of(d.rmse_before, d.rmse_after), d.noise, d.noise_through_model);
+  out += line;
+  if (d.contact_samples > 0) {
+    std::snprintf(line, sizeof line,
+                  "in the actee's contact (%zu samples, each error scaled to the sensor's noise): %.4g N before, %.4g N "
+                  "after (shrink %.0f %%)\n",
+                  d.contact_samples, d.contact_before, d.contact_after, shrink_of(d.contact_before, d.contact_after));
+    out += line;
+  }
+  std::snprintf(line, sizeof line, "shrink: %.0f %%, %s, where the gap is the largest against the noise\n",
+                100 * d.shrink, d.shrink_in_contact ? "in the actee's contact" : "over every sample");
   out += line;
   std::snprintf(line, sizeof line, "judged by cross-validation over %zu folds of %zu traces\n", d.folds, d.judged_on.size());
   out += line;
@@ -163,11 +174,16 @@ std::string report_json(const Diagnosis& d) {
             {"effects", effects},
             {"ambiguous", ambiguous},
             {"shrink", num(d.shrink)},
+            {"shrink_where", d.shrink_in_contact ? "contact" : "every sample"},
             {"rmse_before", num(d.rmse_before)},
             {"rmse_after", num(d.rmse_after)},
             {"noise", num(d.noise)},
             {"noise_through_model", num(d.noise_through_model)},
             {"unit", "N"},
+            {"contact",
+             {{"samples", d.contact_samples},
+              {"rmse_before", num(d.contact_before)},
+              {"rmse_after", num(d.contact_after)}}},
             {"phases", phases},
             {"where", d.where},
             {"residual",

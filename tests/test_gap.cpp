@@ -495,6 +495,136 @@ TEST(GapReplay, EachSampleIsWeighedByTheAnglesNoiseThroughTheModelsSlope) {
   EXPECT_NEAR(r.weight[80], 1.401e-3, 2e-6);
 }
 
+// The nutcracker on the walnut at 60 mm, closed onto it and then held
+// 1 mm into its shell, the angle read with `angle_noise` rad of noise.
+std::vector<Replay> held_on_the_walnut(const std::string& name, double angle_noise, double* theta_c, double* x_noise) {
+  const fs::path dir = scratch(name);
+  write(dir / "x.csv", good_csv());
+  write(dir / "m.yaml", kHead + "actee: {file: " + kSource + "/actees/walnut.yaml, at: 60 mm}\n"
+                        "effort_at: 160 mm\ntrace: x.csv\n");
+  const Model model = compile_measurement(load_measurement((dir / "m.yaml").string()));
+  *theta_c = make_state(model)->contact_angle;
+  const double lever = test::ellipsoid_under_jaw(0.018, 0.0141, 0.060, 30 * kPi / 180).lever;
+  std::mt19937 random(11);
+  std::normal_distribution<double> noise(0.0, angle_noise);
+  std::string csv = "t,angle,effort_force,actee_force\n";
+  for (int i = 0; i < 2000; ++i) {
+    // 0.1 rad above the contact, closing onto it in 0.5 s, then held.
+    const double clear = std::max(0.0, 1 - i / 500.0) * 0.1;
+    const double theta = *theta_c - 0.001 / lever + clear;
+    char row[96];
+    std::snprintf(row, sizeof row, "%.3f,%.9f,1,0\n", i * 1e-3, theta + noise(random));
+    csv += row;
+  }
+  write(dir / "x.csv", csv);
+  std::vector<Replay> replays = replay_lever(model, load_measurement((dir / "m.yaml").string()));
+  *x_noise = replays.at(0).x_noise;
+  return replays;
+}
+
+TEST(GapReplay, SqueezedAndAllButStillIsFittedWhereFrictionIsSmallAgainstItsNoise) {
+  // Held 1 mm into the walnut the angle does not move: the rate is the
+  // noise's, and friction (0.01 N*m) may take any value up to its limit.
+  // The walnut's 854.33 N*m/rad (the test above) passes the angle's noise
+  // into the prediction: with 3e-4 rad that is 0.256 N*m, and friction's
+  // band is under a tenth of it: the samples tell the walnut's law and
+  // are fitted. With 5e-5 rad it is 0.043 N*m, friction's band is not
+  // small against it, and they are not.
+  double theta_c = 0, x_noise = 0;
+  const std::vector<Replay> noisy = held_on_the_walnut("held-noisy", 3e-4, &theta_c, &x_noise);
+  EXPECT_NEAR(x_noise, 3e-4, 3e-5);
+  const Replay& r = noisy.at(0);
+  size_t held = 0, fitted = 0;
+  for (size_t s = 1000; s < 1900; ++s) {
+    held += r.deflection[s] > 0 ? 1 : 0;
+    fitted += r.fitted[s] ? 1 : 0;
+    if (r.fitted[s]) {
+      EXPECT_TRUE(r.phase[s] == Phase::loading || r.phase[s] == Phase::unloading) << s;
+    }
+  }
+  EXPECT_GT(held, 850u);  // all but where the noise lifts the jaw off
+  EXPECT_EQ(fitted, held);
+  double quiet_theta_c = 0, quiet_x_noise = 0;
+  const std::vector<Replay> quiet = held_on_the_walnut("held-quiet", 5e-5, &quiet_theta_c, &quiet_x_noise);
+  for (size_t s = 1000; s < 1900; ++s) EXPECT_FALSE(quiet.at(0).fitted[s]) << s;
+  // Within three of the angle's noise above the contact, the noise may put
+  // the jaws on the walnut: the slope there is the walnut's, not the
+  // spring's -0.2 N*m/rad; farther off, the spring's alone.
+  bool near_seen = false, far_seen = false;
+  for (size_t s = 0; s < r.t.size(); ++s) {
+    if (r.deflection[s] > 0) continue;
+    const double above = r.x[s] - theta_c;  // rad
+    if (above < 2.5 * x_noise) {
+      near_seen = true;
+      EXPECT_LT(r.slope[s], -100) << s;
+    } else if (above > 3.5 * x_noise) {
+      far_seen = true;
+      EXPECT_NEAR(r.slope[s], -0.2, 1e-9) << s;
+    }
+  }
+  EXPECT_TRUE(near_seen);
+  EXPECT_TRUE(far_seen);
+}
+
+// The nutcracker on a hazelnut at 75 mm, driven in four slow triangles
+// from 0.06 rad clear of it to 0.6 of its limit's linear deflection in
+// it, measured at 160 mm with 1e-4 rad and 0.02 N of noise. The
+// hazelnut's law is k r (d / r)^exponent h / (h - d), r its limit's
+// deflection 431 N / 270 N/mm: exponent 1 is its nominal law.
+fs::path squeezed_hazelnut(const std::string& name, double exponent) {
+  const fs::path dir = scratch(name);
+  write(dir / "x.csv", good_csv());
+  const std::string head = kHead + "actee: {file: " + kSource + "/actees/hazelnut.yaml, at: 75 mm}\neffort_at: 160 mm\n";
+  write(dir / "m.yaml", head + "trace: x.csv\n");
+  const auto state = make_state(compile_measurement(load_measurement((dir / "m.yaml").string())));
+  const double a = std::abs(state->load_distance), h = state->actee_thickness, theta_c = state->contact_angle;
+  const double k = 270e3, r = 431 / k, sp = 0.010, rest = 30 * kPi / 180, b = 0.160;
+  const double deepest = 0.6 * r / a;  // rad past the contact
+  std::string traces;
+  for (int n = 0; n < 4; ++n) {
+    std::mt19937 random(100 + n);
+    std::normal_distribution<double> effort_noise(0.0, 0.02), angle_noise(0.0, 1e-4);
+    std::string csv = "t,angle,effort_force,actee_force\n";
+    for (int i = 0; i < 4000; ++i) {
+      const double t = i * 1e-3, phase = std::fmod(t, 2.0);
+      const double down = phase < 1 ? phase : 2 - phase;  // 0 to 1 and back, each second
+      const double theta = theta_c + 0.06 - (0.06 + deepest) * down;
+      const double omega = (phase < 1 ? -1 : 1) * (0.06 + deepest);
+      const double d = std::max(0.0, a * (theta_c - theta));
+      const double force = d > 0 ? k * r * std::pow(d / r, exponent) * h / (h - d) : 0.0;
+      const double torque = 2000 * sp * (rest - theta) * sp + 1.5 * sp + force * a - 0.01 * (omega > 0 ? 1 : -1);
+      char row[128];
+      std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,%.6f\n", t, theta + angle_noise(random),
+                    torque / b + effort_noise(random), force);
+      csv += row;
+    }
+    write(dir / ("s" + std::to_string(n) + ".csv"), csv);
+    traces += (n ? ", s" : "s") + std::to_string(n) + ".csv";
+  }
+  write(dir / "m.yaml", head + "traces: [" + traces + "]\n");
+  return dir / "m.yaml";
+}
+
+TEST(Gap, AnActeesLawIsJudgedWhereTheJawsDeflectIt) {
+  const Diagnosis hertz = diagnose(load_measurement(squeezed_hazelnut("hertz", 1.5).string()));
+  EXPECT_EQ(hertz.verdict, Verdict::explained) << report_text(hertz);
+  ASSERT_EQ(hertz.effects.size(), 1u) << report_text(hertz);
+  EXPECT_EQ(hertz.effects[0].kind, EffectKind::actee_compliance);
+  EXPECT_NEAR(hertz.effects[0].value[0], 1.5, 0.05);
+  // The contact's samples weigh little (the hazelnut passes the angle's
+  // noise on): its gap, scaled to the sensor's noise, is the larger, and
+  // the shrink is the contact's.
+  EXPECT_GT(hertz.contact_samples, 1000u);
+  EXPECT_GT(hertz.contact_before, hertz.rmse_before);
+  EXPECT_TRUE(hertz.shrink_in_contact);
+  EXPECT_DOUBLE_EQ(hertz.shrink, 1 - hertz.contact_after / hertz.contact_before);
+  EXPECT_LT(hertz.contact_after, 1.15 * hertz.noise_through_model);
+  // Its nominal law: nothing to find, in the contact either.
+  const Diagnosis linear = diagnose(load_measurement(squeezed_hazelnut("linear", 1.0).string()));
+  EXPECT_EQ(linear.verdict, Verdict::none) << report_text(linear);
+  EXPECT_LT(linear.contact_before, 1.15 * linear.noise_through_model) << report_text(linear);
+}
+
 TEST(Gap, AProbeFindsTheLeverAndTheSpring) {
   // A robot pushes at 160 mm on a tool like the nutcracker but opening to
   // 40 deg, with a 3000 N/m spring at 10 mm (0.3 N*m/rad) preloaded with
