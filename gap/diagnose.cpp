@@ -319,7 +319,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   const std::vector<EffectKind> applicable = fitter.candidates();
   std::erase_if(library, [&](EffectKind k) { return std::find(applicable.begin(), applicable.end(), k) == applicable.end(); });
   // Which held-out samples have the actee deflected, in the order score()
-  // lists them, and their weight. An actee's stiffness passes the angle's
+  // lists them. An actee's stiffness passes the angle's
   // noise into its prediction, so its samples weigh little: a gap there,
   // many times their noise, would be lost in the RMSE over every sample.
   // The actee's part is judged on its own. Between plates the actee is
