@@ -123,12 +123,13 @@ bool ends_with_the_text(const YAML::Node& root, const std::string& text) {
   return true;
 }
 
-Node parse(const std::string& text, const std::string& name) {
+Node parse(const std::string& raw, const std::string& name) {
   auto file = std::make_shared<const std::string>(name);
-  if (text.size() > kMaxYamlBytes) {
+  if (raw.size() > kMaxYamlBytes) {
     fail(SourceLoc{name, 1, 1}, "a file of at most " + std::to_string(kMaxYamlBytes) + " bytes",
-         std::to_string(text.size()) + " bytes");
+         std::to_string(raw.size()) + " bytes");
   }
+  const std::string text = without_leading_comments(raw);
   // Before parsing: a broken second document must not hide behind its own
   // syntax error.
   if (const SourceLoc second = second_document(text, name); second.line > 0) {
@@ -208,6 +209,35 @@ void Node::fail(const std::string& expected) const { afford::fail(loc(), expecte
 
 void Node::fail(const std::string& expected, const std::string& found) const {
   afford::fail(loc(), expected, found);
+}
+
+// yaml-cpp reads a comment a character at a time through its regular
+// expressions, some 400 instructions a byte, and the shipped files
+// open with their sources and reasons: half their bytes. The comment lines
+// before the first content are emptied, their line ends kept, so that
+// every line and column stays where it was; nothing there can be inside a
+// scalar. Only lines of spaces and a '#' (yaml-cpp decides what a tab
+// means), and not in UTF-16 or UTF-32, whose ASCII holds zeros.
+std::string without_leading_comments(const std::string& text) {
+  if (text.find('\0') != std::string::npos) return text;
+  std::string out;
+  size_t at = 0;
+  while (at < text.size()) {
+    size_t end = text.find_first_of("\r\n", at);
+    if (end == std::string::npos) end = text.size();
+    const size_t first = text.find_first_not_of(' ', at);
+    const bool blank = first >= end;
+    if (!blank && text[first] != '#') break;  // content, or a tab: from here on as it is
+    if (blank) out.append(text, at, end - at);
+    size_t next = end;
+    if (next < text.size() && text[next] == '\r') ++next;
+    if (next < text.size() && text[next] == '\n') ++next;
+    out.append(text, end, next - end);
+    at = next;
+  }
+  if (at == 0) return text;
+  out.append(text, at, std::string::npos);
+  return out;
 }
 
 Node load_yaml_file(const std::string& path) { return parse(read_regular_file(path, kMaxYamlBytes), path); }

@@ -53,6 +53,11 @@ inline constexpr int kMaxYamlDepth = 32;
 Node load_yaml_file(const std::string& path);
 Node load_yaml_string(const std::string& text, const std::string& name);
 
+// The text with the comment lines before its first content emptied (line
+// ends kept: every line and column stays), which yaml-cpp reads slowly;
+// what the loaders parse.
+std::string without_leading_comments(const std::string& text);
+
 // Reads the keys of one mapping against its schema: the keys it may have
 // are declared up front, so a key that is not one of them is reported first,
 // with "did you mean", before any key counts as missing.

@@ -6,7 +6,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -21,6 +23,8 @@
 #include "rules.h"
 #include "session.h"
 #include "yaml_reader.h"
+
+#include <yaml-cpp/yaml.h>
 
 namespace afford {
 namespace {
@@ -117,6 +121,54 @@ TEST(Hardening, ASecondDocumentIsFoundWhereTheFirstCouldEndEarly) {
   EXPECT_THAT(error_of([] { load_yaml_string("a: 1\n%TAG ! tag:x,2000:\nb: 2\n", "directive.yaml"); }),
               HasSubstr("directive.yaml:3:1: expected one YAML document per file, found a second document"));
   EXPECT_NO_THROW(load_yaml_string("a: 1\nb: [2,\n  3]\nc: |\n  ...\n", "one.yaml"));
+}
+
+// yaml-cpp reads comments slowly; the lines of comments before a file's
+// first content are emptied before it parses, their line ends kept.
+TEST(Hardening, LeadingCommentsAreEmptiedAndEveryPlaceStays) {
+  EXPECT_EQ(without_leading_comments("# a\n  # b\n\nkey: 1 # c\n# d\n"), "\n\n\nkey: 1 # c\n# d\n");
+  EXPECT_EQ(without_leading_comments("# a\r\nk: v\r\n"), "\r\nk: v\r\n");
+  EXPECT_EQ(without_leading_comments("# a\n\t# b\nk: 1\n"), "\n\t# b\nk: 1\n");  // a tab: yaml-cpp's to judge
+  EXPECT_EQ(without_leading_comments("# only"), "");
+  EXPECT_EQ(without_leading_comments("k: 1\n# a\n"), "k: 1\n# a\n");
+  const std::string bom = "\xEF\xBB\xBF# a\nk: 1\n";
+  EXPECT_EQ(without_leading_comments(bom), bom);
+  const std::string utf16("#\0 \0a\0\n\0", 8);
+  EXPECT_EQ(without_leading_comments(utf16), utf16);
+  // Errors keep their line and column.
+  EXPECT_THAT(error_of([] { load_yaml_string("# a\n  # b\n,x: 1\n", "lead.yaml"); }),
+              HasSubstr("lead.yaml:3:1: expected valid YAML, found ',' where no YAML node can start"));
+  EXPECT_THAT(error_of([] { load_yaml_string("# a\n# b\n\nk: [1, 2\n", "flow.yaml"); }),
+              HasSubstr("flow.yaml:5:1: expected valid YAML, found a syntax error: end of sequence flow not found"));
+  EXPECT_THAT(error_of([] { load_yaml_string("# a\n# b\n", "empty.yaml"); }),
+              HasSubstr("empty.yaml:1:1: expected a YAML mapping, found an empty file"));
+}
+
+// Every shipped YAML file is the same tree, at the same places, with its
+// leading comments emptied.
+TEST(Hardening, ShippedFilesParseTheSameWithoutTheirLeadingComments) {
+  int files = 0, shorter = 0;
+  for (const char* folder : {"objects", "actees", "agents", "rules", "sessions", "devices", "measurements",
+                             "tests/rules"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(AFFORD_SOURCE_DIR) + "/" + folder)) {
+      if (entry.path().extension() != ".yaml") continue;
+      std::ifstream in(entry.path(), std::ios::binary);
+      const std::string raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      const std::string emptied = without_leading_comments(raw);
+      EXPECT_EQ(std::count(raw.begin(), raw.end(), '\n'), std::count(emptied.begin(), emptied.end(), '\n'));
+      const YAML::Node a = YAML::Load(raw), b = YAML::Load(emptied);
+      EXPECT_EQ(YAML::Dump(a), YAML::Dump(b)) << entry.path();
+      ASSERT_TRUE(a.IsMap()) << entry.path();
+      for (auto i = a.begin(), j = b.begin(); i != a.end() && j != b.end(); ++i, ++j) {
+        EXPECT_EQ(i->first.Mark().line, j->first.Mark().line) << entry.path();
+        EXPECT_EQ(i->second.Mark().column, j->second.Mark().column) << entry.path();
+      }
+      ++files;
+      shorter += emptied.size() < raw.size() ? 1 : 0;
+    }
+  }
+  EXPECT_GT(files, 40);
+  EXPECT_GT(shorter, 20);  // most open with their sources or reasons
 }
 
 TEST(Hardening, OnlyRegularFilesAreRead) {
