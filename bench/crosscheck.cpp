@@ -15,8 +15,11 @@
 
 #include "explore.h"
 #include "mujoco_harness.h"
+#include "observer.h"
 #include "parallel.h"
 #include "results.h"
+#include "run.h"
+#include "scripted_agent.h"
 
 namespace afford {
 namespace {
@@ -24,7 +27,36 @@ namespace {
 struct Outcome {
   double afford_break = -1, mujoco_break = -1;  // s, -1: it did not break
   double afford_load = 0, mujoco_load = 0;      // N, the actee's largest load before it broke
+  std::vector<double> afford_loads, mujoco_loads;  // N, the actee's load each frame
+  // MuJoCo's actee is a free body (afford's stays where it was placed):
+  // how far it moved and turned from its start by its crack or the end.
+  double mujoco_moved = 0, mujoco_turned = 0;  // m, rad
 };
+
+// The actee's load each frame of an afford run.
+class LoadTrace : public Observer {
+ public:
+  explicit LoadTrace(std::vector<double>* loads) : loads_(loads) {}
+  void on_frame(const Model&, const State& s, const RuleSet&, const RuleState&) override { loads_->push_back(s.actee_force); }
+
+ private:
+  std::vector<double>* loads_;
+};
+
+// When a load trace first passes `force` (s; -1: never), frames of `step` s.
+double first_past(const std::vector<double>& loads, double force, double step) {
+  for (size_t k = 0; k < loads.size(); ++k) {
+    if (loads[k] > force) return static_cast<double>(k + 1) * step;
+  }
+  return -1;
+}
+
+// A load trace at time t (s), frames of `step` s from the first at `step`.
+double load_at(const std::vector<double>& loads, double t, double step) {
+  if (loads.empty()) return 0;
+  const auto k = static_cast<size_t>(std::clamp(std::lround(t / step) - 1, 0L, static_cast<long>(loads.size()) - 1));
+  return loads[k];
+}
 
 // A grid point as a session MuJoCo's scene is exported from: the point's
 // model and script (named uniquely: the harness's file is named after it).
@@ -68,17 +100,31 @@ int crosscheck(const std::string& source, int threads) {
     const PointResult a = run_point(e, points[i]);
     out[i].afford_break = a.broke_at;
     out[i].afford_load = a.peak_actee_force;
+    {  // the same run again, its load kept frame by frame
+      ScriptedAgent agent(session.script);
+      LoadTrace trace(&out[i].afford_loads);
+      Observer* observers[] = {&trace};
+      run_session(session.model, *e.rules, agent, observers);
+    }
     std::unique_lock<std::mutex> lock(loading);
     MujocoScene scene(session);
     lock.unlock();
     const int frames = static_cast<int>(std::floor(scene.duration() / session.model.timestep + 1e-9));
+    // The actee's free joint: position, then orientation (w, x, y, z).
+    const mjtNum* q = scene.data()->qpos + scene.model()->jnt_qposadr[mj_name2id(scene.model(), mjOBJ_JOINT, "actee")];
+    const Eigen::Vector3d start_pos(q[0], q[1], q[2]);
+    const Eigen::Quaterniond start_quat(q[3], q[4], q[5], q[6]);
     for (int k = 1; k <= frames; ++k) {
       const double load = scene.actee_load();
-      if (scene.frame()) {
+      const bool broke = scene.frame();
+      out[i].mujoco_moved = (Eigen::Vector3d(q[0], q[1], q[2]) - start_pos).norm();
+      out[i].mujoco_turned = start_quat.angularDistance(Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized());
+      if (broke) {
         out[i].mujoco_break = scene.data()->time;
         break;
       }
       out[i].mujoco_load = std::max(out[i].mujoco_load, std::max(load, scene.actee_load()));
+      out[i].mujoco_loads.push_back(scene.actee_load());
     }
   });
 
@@ -126,11 +172,33 @@ int crosscheck(const std::string& source, int threads) {
                 o.afford_load, o.mujoco_load, o.afford_load > 0 ? 100 * (o.mujoco_load / o.afford_load - 1) : 0.0);
   }
   if (agree == static_cast<int>(points.size())) std::printf("  none\n");
-  std::printf("cracks more than 20 ms apart:\n");
+  // A crack time is the time the load takes to reach the limit: where it
+  // nears the limit slowly, a small difference of load is a long time.
+  // At the first engine's crack, how far the other's load is from the
+  // limit, and how fast it was rising before its own crack.
+  std::printf("cracks more than 20 ms apart, with the other engine's load at the first crack:\n");
+  double largest_shortfall = 0;  // of the limit, at the first crack
   for (size_t i = 0; i < points.size(); ++i) {
     const Outcome& o = out[i];
     if (o.afford_break < 0 || o.mujoco_break < 0 || std::abs(o.mujoco_break - o.afford_break) <= 0.020) continue;
-    std::printf("  %s: afford %.3f s, MuJoCo %.3f s\n", where(points[i]).c_str(), o.afford_break, o.mujoco_break);
+    const Model& model = *e.models[static_cast<size_t>(points[i].actee)][static_cast<size_t>(points[i].placement)];
+    const double step = model.timestep, limit = model.actee_limit;
+    const bool afford_first = o.afford_break < o.mujoco_break;
+    const std::vector<double>& later = afford_first ? o.mujoco_loads : o.afford_loads;
+    const double first = afford_first ? o.afford_break : o.mujoco_break;
+    const double last = afford_first ? o.mujoco_break : o.afford_break;
+    const double load = load_at(later, first, step);
+    const double rate = (load_at(later, last - step, step) - load_at(later, last - 0.020, step)) / (0.020 - step);  // N/s
+    largest_shortfall = std::max(largest_shortfall, 1 - load / limit);
+    // Where the loads part: when each first passes a tenth and a half of the limit.
+    const double tenth_a = first_past(o.afford_loads, 0.1 * limit, step), tenth_m = first_past(o.mujoco_loads, 0.1 * limit, step);
+    const double half_a = first_past(o.afford_loads, 0.5 * limit, step), half_m = first_past(o.mujoco_loads, 0.5 * limit, step);
+    std::printf("  %s: afford %.3f s, MuJoCo %.3f s; at %s's crack %s's load is %.1f N, %.1f %% below the %.0f N "
+                "limit, rising at %.0f N/s; a tenth of the limit at %.3f and %.3f s, half at %.3f and %.3f s; MuJoCo's "
+                "actee moved %.2f mm and turned %.1f deg\n",
+                where(points[i]).c_str(), o.afford_break, o.mujoco_break, afford_first ? "afford" : "MuJoCo",
+                afford_first ? "MuJoCo" : "afford", load, 100 * (1 - load / limit), limit, rate, tenth_a, tenth_m,
+                half_a, half_m, 1e3 * o.mujoco_moved, o.mujoco_turned * 180 / 3.14159265358979323846);
   }
   std::sort(dt_ms.begin(), dt_ms.end());
   const double median = dt_ms.empty() ? 0 : dt_ms[dt_ms.size() / 2];
@@ -140,6 +208,8 @@ int crosscheck(const std::string& source, int threads) {
               100.0 * agree / static_cast<double>(points.size()));
   std::printf("crack time, MuJoCo - afford, where both crack (%d points): median %+.1f ms, largest |%.1f| ms (goal 20 ms)\n",
               both, median, worst);
+  std::printf("where they crack more than 20 ms apart, the later engine's load at the first crack is at most %.1f %% "
+              "below the limit\n", 100 * largest_shortfall);
   return 0;
 }
 
