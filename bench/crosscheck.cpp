@@ -33,14 +33,19 @@ struct Outcome {
   double mujoco_moved = 0, mujoco_turned = 0;  // m, rad
 };
 
-// The actee's load each frame of an afford run.
+// An afford run's side of the outcome: the actee's load each frame, its
+// largest before the break, and when it broke.
 class LoadTrace : public Observer {
  public:
-  explicit LoadTrace(std::vector<double>* loads) : loads_(loads) {}
-  void on_frame(const Model&, const State& s, const RuleSet&, const RuleState&) override { loads_->push_back(s.actee_force); }
+  explicit LoadTrace(Outcome* out) : out_(out) {}
+  void on_frame(const Model&, const State& s, const RuleSet&, const RuleState&) override {
+    out_->afford_loads.push_back(s.actee_force);
+    out_->afford_load = std::max(out_->afford_load, s.actee_force);
+    if (out_->afford_break < 0 && s.condition == ActeeCondition::broken) out_->afford_break = s.t;
+  }
 
  private:
-  std::vector<double>* loads_;
+  Outcome* out_;
 };
 
 // When a load trace first passes `force` (s; -1: never), frames of `step` s.
@@ -97,12 +102,9 @@ int crosscheck(const std::string& source, int threads) {
   std::mutex loading;  // MuJoCo's XML loader is not documented as thread-safe
   parallel_for(points.size(), threads, [&](size_t i) {
     const CompiledSession session = point_session(e, points[i], i);
-    const PointResult a = run_point(e, points[i]);
-    out[i].afford_break = a.broke_at;
-    out[i].afford_load = a.peak_actee_force;
-    {  // the same run again, its load kept frame by frame
+    {  // the point as run_point runs it, its load kept frame by frame
       ScriptedAgent agent(session.script);
-      LoadTrace trace(&out[i].afford_loads);
+      LoadTrace trace(&out[i]);
       Observer* observers[] = {&trace};
       run_session(session.model, *e.rules, agent, observers);
     }
