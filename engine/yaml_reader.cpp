@@ -212,8 +212,8 @@ void Node::fail(const std::string& expected, const std::string& found) const {
 }
 
 // yaml-cpp reads a comment a character at a time through its regular
-// expressions, some 400 instructions a byte, and the shipped files
-// open with their sources and reasons: half their bytes. The comment lines
+// expressions, some 440 instructions a byte, and the shipped files
+// open with their sources and reasons: over half their bytes. The comment lines
 // before the first content are emptied, their line ends kept, so that
 // every line and column stays where it was; nothing there can be inside a
 // scalar. Only lines of spaces and a '#' (yaml-cpp decides what a tab
