@@ -4,7 +4,7 @@
 // `afford render`). The "fps" counter is the rate; each frame includes
 // reading the pixels back and the supersampling average. BM_RenderAndWrite
 // is what `afford render` does per frame: the picture and its PNG file
-// (zlib level 1; the goal is 60 frames/s at 640x480, 2x, on one core).
+// (libdeflate level 1; the goal is 60 frames/s at 640x480, 2x, on one core).
 #include <benchmark/benchmark.h>
 
 #include <filesystem>

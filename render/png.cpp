@@ -1,10 +1,12 @@
 #include "png.h"
 
+#include <libdeflate.h>
 #include <zlib.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 
 #include "files.h"
 
@@ -12,7 +14,20 @@ namespace afford::render {
 namespace {
 
 constexpr std::uint8_t kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-constexpr int kLevel = 1;  // deflate level: level 1 is ~10x faster than 6 and only a little larger here
+// libdeflate's level 1: on a 640x480 frame 2.3 ms against zlib's 4.2 ms at
+// its level 1, and 10 % smaller (README, Dependencies).
+constexpr int kLevel = 1;
+
+// One compressor a thread, kept: it holds some 100 KB of tables that each
+// frame would otherwise allocate and fault in again.
+libdeflate_compressor& compressor() {
+  struct Free {
+    void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
+  };
+  thread_local const std::unique_ptr<libdeflate_compressor, Free> c(libdeflate_alloc_compressor(kLevel));
+  if (!c) throw PngError("libdeflate could not start compressing (out of memory)");
+  return *c;
+}
 
 void put32(std::vector<std::uint8_t>& out, std::uint32_t v) {
   for (int s = 24; s >= 0; s -= 8) out.push_back(static_cast<std::uint8_t>(v >> s));
@@ -76,29 +91,18 @@ void unfilter(std::vector<std::uint8_t>& raw, size_t row, int h, size_t bpp) {
 
 std::vector<std::uint8_t> encode_png(const Image& img) {
   if (img.width <= 0 || img.height <= 0) throw PngError("cannot encode an empty image");
-  // The scanlines, each led by its filter byte (0: none), given to zlib
-  // row by row from the image: no copy of the whole picture.
+  // The scanlines, each led by its filter byte (0: none), compressed whole
+  // into a zlib stream.
   const size_t row = static_cast<size_t>(img.width) * 3;
-  const size_t raw = (row + 1) * static_cast<size_t>(img.height);
-  std::vector<std::uint8_t> z(::compressBound(static_cast<uLong>(raw)));
-  z_stream zs{};
-  if (::deflateInit(&zs, kLevel) != Z_OK) throw PngError("zlib could not start compressing");
-  zs.next_out = z.data();
-  zs.avail_out = static_cast<uInt>(z.size());
-  std::uint8_t filter = 0;
-  int rc = Z_OK;
-  for (int y = 0; y < img.height && rc == Z_OK; ++y) {
-    zs.next_in = &filter;
-    zs.avail_in = 1;
-    rc = ::deflate(&zs, Z_NO_FLUSH);
-    zs.next_in = const_cast<std::uint8_t*>(img.rgb.data() + row * static_cast<size_t>(y));
-    zs.avail_in = static_cast<uInt>(row);
-    if (rc == Z_OK) rc = ::deflate(&zs, y + 1 == img.height ? Z_FINISH : Z_NO_FLUSH);
-    if (zs.avail_in != 0) rc = Z_BUF_ERROR;  // cannot happen within compressBound; never drop a row
+  std::vector<std::uint8_t> raw((row + 1) * static_cast<size_t>(img.height));
+  for (size_t y = 0; y < static_cast<size_t>(img.height); ++y) {
+    raw[(row + 1) * y] = 0;
+    std::memcpy(&raw[(row + 1) * y + 1], img.rgb.data() + row * y, row);
   }
-  const size_t zn = zs.total_out;
-  ::deflateEnd(&zs);
-  if (rc != Z_STREAM_END) throw PngError("zlib could not compress the image");
+  libdeflate_compressor& c = compressor();
+  std::vector<std::uint8_t> z(libdeflate_zlib_compress_bound(&c, raw.size()));
+  const size_t zn = libdeflate_zlib_compress(&c, raw.data(), raw.size(), z.data(), z.size());
+  if (zn == 0) throw PngError("libdeflate could not compress the image");  // cannot happen within the bound
 
   std::vector<std::uint8_t> out(kSignature, kSignature + 8);
   out.reserve(zn + 64);

@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 packages=(
   build-essential cmake pkg-config ninja-build
   libeigen3-dev libfcl-dev libccd-dev libyaml-cpp-dev
-  libglm-dev libosmesa6-dev zlib1g-dev libusb-1.0-0-dev umockdev libumockdev-dev
+  libglm-dev libosmesa6-dev zlib1g-dev libdeflate-dev libusb-1.0-0-dev umockdev libumockdev-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev
   libcli11-dev help2man
   nlohmann-json3-dev python3-jsonschema python3-yaml parallel
