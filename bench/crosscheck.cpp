@@ -24,6 +24,12 @@
 namespace afford {
 namespace {
 
+// MuJoCo's actee against the tool in one frame.
+struct MujocoPush {
+  double arm = 0;  // m, the force-weighted lever arm about the hinge of its contacts with the moving arm
+  int fixed_contacts = 0, moving_contacts = 0;
+};
+
 struct Outcome {
   double afford_break = -1, mujoco_break = -1;  // s, -1: it did not break
   double afford_load = 0, mujoco_load = 0;      // N, the actee's largest load before it broke
@@ -31,6 +37,12 @@ struct Outcome {
   // MuJoCo's actee is a free body (afford's stays where it was placed):
   // how far it moved and turned from its start by its crack or the end.
   double mujoco_moved = 0, mujoco_turned = 0;  // m, rad
+  // Where the load acts: afford's lever arm of the actee's push (D_ac),
+  // and each frame MuJoCo's, the force-weighted arm about the hinge of the
+  // actee's contacts with the moving arm, and how many contacts the actee
+  // has with each arm.
+  double afford_arm = 0;  // m
+  std::vector<MujocoPush> mujoco_push;
 };
 
 // An afford run's side of the outcome: the actee's load each frame, its
@@ -40,6 +52,7 @@ class LoadTrace : public Observer {
   explicit LoadTrace(Outcome* out) : out_(out) {}
   void on_frame(const Model&, const State& s, const RuleSet&, const RuleState&) override {
     out_->afford_loads.push_back(s.actee_force);
+    if (s.actee_force > 0) out_->afford_arm = std::abs(s.load_distance);
     out_->afford_load = std::max(out_->afford_load, s.actee_force);
     if (out_->afford_break < 0 && s.condition == ActeeCondition::broken) out_->afford_break = s.t;
   }
@@ -47,6 +60,34 @@ class LoadTrace : public Observer {
  private:
   Outcome* out_;
 };
+
+// MuJoCo's actee against the tool now.
+MujocoPush mujoco_push(MujocoScene& scene) {
+  const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  const int actee = mj_name2id(m, mjOBJ_BODY, "actee"), moving = mj_name2id(m, mjOBJ_BODY, "moving_arm");
+  const int hinge = mj_name2id(m, mjOBJ_JOINT, "hinge");
+  const Eigen::Vector3d anchor(d->xanchor + 3 * hinge), axis(d->xaxis + 3 * hinge);
+  MujocoPush push;
+  double force = 0, moment = 0;
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    const int b1 = m->geom_bodyid[c.geom1], b2 = m->geom_bodyid[c.geom2];
+    if (b1 != actee && b2 != actee) continue;
+    if (b1 != moving && b2 != moving) {
+      ++push.fixed_contacts;
+      continue;
+    }
+    ++push.moving_contacts;
+    mjtNum f[6];
+    mj_contactForce(m, d, i, f);
+    const Eigen::Vector3d p(c.pos), n(c.frame);
+    force += f[0];
+    moment += f[0] * std::abs((p - anchor).cross(n).dot(axis));
+  }
+  push.arm = force > 0 ? moment / force : 0.0;
+  return push;
+}
 
 // When a load trace first passes `force` (s; -1: never), frames of `step` s.
 double first_past(const std::vector<double>& loads, double force, double step) {
@@ -127,6 +168,7 @@ int crosscheck(const std::string& source, int threads) {
       }
       out[i].mujoco_load = std::max(out[i].mujoco_load, std::max(load, scene.actee_load()));
       out[i].mujoco_loads.push_back(scene.actee_load());
+      out[i].mujoco_push.push_back(mujoco_push(scene));
     }
   });
 
@@ -192,15 +234,18 @@ int crosscheck(const std::string& source, int threads) {
     const double load = load_at(later, first, step);
     const double rate = (load_at(later, last - step, step) - load_at(later, last - 0.020, step)) / (0.020 - step);  // N/s
     largest_shortfall = std::max(largest_shortfall, 1 - load / limit);
+    const MujocoPush push = o.mujoco_push.empty() ? MujocoPush{} : o.mujoco_push.back();  // before MuJoCo's crack
     // Where the loads part: when each first passes a tenth and a half of the limit.
     const double tenth_a = first_past(o.afford_loads, 0.1 * limit, step), tenth_m = first_past(o.mujoco_loads, 0.1 * limit, step);
     const double half_a = first_past(o.afford_loads, 0.5 * limit, step), half_m = first_past(o.mujoco_loads, 0.5 * limit, step);
     std::printf("  %s: afford %.3f s, MuJoCo %.3f s; at %s's crack %s's load is %.1f N, %.1f %% below the %.0f N "
                 "limit, rising at %.0f N/s; a tenth of the limit at %.3f and %.3f s, half at %.3f and %.3f s; MuJoCo's "
-                "actee moved %.2f mm and turned %.1f deg\n",
+                "actee moved %.2f mm and turned %.1f deg; the load's lever arm: afford %.1f mm, MuJoCo %.1f mm; MuJoCo's actee "
+                "has %d contacts with the fixed arm and %d with the moving arm\n",
                 where(points[i]).c_str(), o.afford_break, o.mujoco_break, afford_first ? "afford" : "MuJoCo",
                 afford_first ? "MuJoCo" : "afford", load, 100 * (1 - load / limit), limit, rate, tenth_a, tenth_m,
-                half_a, half_m, 1e3 * o.mujoco_moved, o.mujoco_turned * 180 / 3.14159265358979323846);
+                half_a, half_m, 1e3 * o.mujoco_moved, o.mujoco_turned * 180 / 3.14159265358979323846,
+                1e3 * o.afford_arm, 1e3 * push.arm, push.fixed_contacts, push.moving_contacts);
   }
   std::sort(dt_ms.begin(), dt_ms.end());
   const double median = dt_ms.empty() ? 0 : dt_ms[dt_ms.size() / 2];
