@@ -425,10 +425,13 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set) const {
 }
 
 double Fitter::scaled_actee_rss(size_t i, double exponent, double* factor, double* wsum,
-                                std::vector<double>* residual) const {
+                                std::vector<double>* residual, double zero_m) const {
   const Replay& r = replays_[i];
   const std::vector<double>& own = own_actee_[i];
-  const std::vector<double> law = exponent > 0 ? actee_term(model_, r, actee_, exponent, 1.0) : own;
+  const std::vector<double> law =
+      exponent > 0   ? actee_term(model_, r, actee_, exponent, 1.0, zero_m)
+      : zero_m > 0 ? actee_term(model_, r, actee_, model_.actee_exponent, model_.actee_reference, zero_m)
+                   : own;
   // y = the measurement less everything but the actee's law; one column.
   auto y_at = [&](size_t s) { return (r.measured[s] - (r.nominal[s] - own[s])) * r.to_newtons; };
   double cc = 0, cy = 0, yy = 0, w = 0;
@@ -449,11 +452,18 @@ double Fitter::scaled_actee_rss(size_t i, double exponent, double* factor, doubl
   return std::max(0.0, yy - f * cy);
 }
 
-double Fitter::shared_exponent(const std::vector<size_t>& on) const {
+double Fitter::own_zero(size_t i, double exponent) const {
+  double most = 0;  // m, the largest deflection fitted
+  for (size_t s : fitted_[i]) most = std::max(most, replays_[i].deflection[s]);
+  double f = 0, w = 0;
+  return minimise([&](double z) { return scaled_actee_rss(i, exponent, &f, &w, nullptr, z); }, 0.0, most / 2, 30);
+}
+
+double Fitter::shared_exponent(const std::vector<size_t>& on, bool own_zeros) const {
   return minimise(
       [&](double e) {
         double sum = 0, f = 0, w = 0;
-        for (size_t i : on) sum += scaled_actee_rss(i, e, &f, &w);
+        for (size_t i : on) sum += scaled_actee_rss(i, e, &f, &w, nullptr, own_zeros ? own_zero(i, e) : 0.0);
         return sum;
       },
       kMinExponent, kMaxExponent, 35);

@@ -63,14 +63,18 @@ class Fitter {
   // Specimens that differ in stiffness (several nuts of one kind): replay i
   // alone, its actee's law times the factor that fits that trace best. The
   // law is the actee's own when `exponent` is 0, else the power law of that
-  // exponent. Returns the weighted RSS (N^2); the factor (of the own law,
-  // or the power law's coefficient), the weights' sum and, if asked, each
-  // sample's residual (N, 0 where not fitted) through the pointers.
+  // exponent; it starts at deflection `zero_m` (0: the trace's zero).
+  // Returns the weighted RSS (N^2); the factor (of the own law, or the
+  // power law's coefficient), the weights' sum and, if asked, each sample's
+  // residual (N, 0 where not fitted) through the pointers.
   double scaled_actee_rss(size_t i, double exponent, double* factor, double* wsum,
-                          std::vector<double>* residual = nullptr) const;
+                          std::vector<double>* residual = nullptr, double zero_m = 0) const;
+  // Where replay i's specimen seats (m): the start of its law, between 0
+  // and half its largest deflection, that fits it best with its own factor.
+  double own_zero(size_t i, double exponent) const;
   // The power law's exponent that fits the replays `on` best, each with a
-  // factor of its own.
-  double shared_exponent(const std::vector<size_t>& on) const;
+  // factor of its own, and with a zero of its own where `own_zeros`.
+  double shared_exponent(const std::vector<size_t>& on, bool own_zeros = false) const;
 
  private:
   struct Nonlinear {

@@ -274,12 +274,13 @@ ActeeGeometry actee_geometry(const Model& model, Rig rig) {
 }
 
 std::vector<double> actee_term(const Model& model, const Replay& r, const ActeeGeometry& g, double exponent,
-                               double reference) {
+                               double reference, double zero_m) {
   std::vector<double> out(r.t.size(), 0.0);
   for (size_t i = 0; i < out.size(); ++i) {
-    if (r.deflection[i] <= 0) continue;  // most samples: the jaws are off the actee
+    const double deflection = r.deflection[i] - zero_m;
+    if (deflection <= 0) continue;  // most samples: the jaws are off the actee
     double slope = 0;
-    out[i] = actee_law(model.actee_stiffness, exponent, reference, r.deflection[i], g.thickness, &slope) * g.arm;
+    out[i] = actee_law(model.actee_stiffness, exponent, reference, deflection, g.thickness, &slope) * g.arm;
   }
   return out;
 }

@@ -83,8 +83,10 @@ ActeeGeometry actee_geometry(const Model& model, Rig rig);
 
 // The actee's torque (lever) or force (plates) at each sample, with the
 // power law of exponent n and reference deflection r (for the
-// actee_compliance candidate).
+// actee_compliance candidate). `zero_m`: where the law starts, the
+// deflection it is taken from (a specimen seated later than its trace's
+// zero).
 std::vector<double> actee_term(const Model& model, const Replay& r, const ActeeGeometry& g, double exponent,
-                               double reference);
+                               double reference, double zero_m = 0);
 
 }  // namespace afford

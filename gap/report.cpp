@@ -97,13 +97,22 @@ std::string report_text(const Diagnosis& d) {
   }
   if (d.specimens.computed) {
     const SpecimenShape& sp = d.specimens;
-    const auto [lo, hi] = std::minmax_element(sp.stiffness_factor.begin(), sp.stiffness_factor.end());
+    const ShapeJudged& own = sp.own_stiffness;
+    const auto [lo, hi] = std::minmax_element(own.stiffness_factor.begin(), own.stiffness_factor.end());
     std::snprintf(line, sizeof line,
                   "specimens: each trace given its own stiffness (%.3g to %.3g times the nominal), %s with the exponent "
                   "fitted on the other traces (%.3g +/- %.2g on all) takes the held-out gap from %.4g N to %.4g N "
                   "(shrink %.0f %%)\n",
-                  *lo, *hi, manifest_of(EffectKind::actee_compliance).name, sp.exponent, sp.exponent_sigma,
-                  sp.rmse_before, sp.rmse_after, 100 * sp.shrink);
+                  *lo, *hi, manifest_of(EffectKind::actee_compliance).name, own.exponent, own.exponent_sigma,
+                  own.rmse_before, own.rmse_after, 100 * own.shrink);
+    out += line;
+    const ShapeJudged& seated = sp.own_zero;
+    const auto [first, last] = std::minmax_element(seated.zero.begin(), seated.zero.end());
+    std::snprintf(line, sizeof line,
+                  "  if the soft toe is seating instead (each trace's law starting at a zero of its own, %.3g to %.3g mm "
+                  "past the trace's): exponent %.3g +/- %.2g, held-out gap from %.4g N to %.4g N (shrink %.0f %%)\n",
+                  1e3 * *first, 1e3 * *last, seated.exponent, seated.exponent_sigma, seated.rmse_before,
+                  seated.rmse_after, 100 * seated.shrink);
     out += line;
     auto side = [](double v) { return v < 0 ? "below" : "above"; };
     std::snprintf(line, sizeof line,
@@ -202,16 +211,23 @@ std::string report_json(const Diagnosis& d) {
   }
   if (d.specimens.computed) {
     const SpecimenShape& sp = d.specimens;
-    Json factors = Json::array();
-    for (double v : sp.stiffness_factor) factors.push_back(num(v));
-    j["specimens"] = {{"effect", manifest_of(EffectKind::actee_compliance).name},
-                      {"exponent", {{"value", num(sp.exponent)}, {"unit", ""}, {"uncertainty", num(sp.exponent_sigma)}}},
-                      {"stiffness_factor", factors},
-                      {"rmse_before", num(sp.rmse_before)},
-                      {"rmse_after", num(sp.rmse_after)},
-                      {"shrink", num(sp.shrink)},
-                      {"first_third", num(sp.first_third)},
-                      {"last_third", num(sp.last_third)}};
+    auto judged = [&](const ShapeJudged& s) {
+      Json factors = Json::array(), zeros = Json::array();
+      for (double v : s.stiffness_factor) factors.push_back(num(v));
+      for (double v : s.zero) zeros.push_back(num(v));
+      return Json{{"exponent", {{"value", num(s.exponent)}, {"unit", ""}, {"uncertainty", num(s.exponent_sigma)}}},
+                  {"stiffness_factor", factors},
+                  {"zero", {{"value", zeros}, {"unit", "m"}}},
+                  {"rmse_before", num(s.rmse_before)},
+                  {"rmse_after", num(s.rmse_after)},
+                  {"shrink", num(s.shrink)}};
+    };
+    Json specimens = {{"effect", manifest_of(EffectKind::actee_compliance).name}};
+    specimens.update(judged(sp.own_stiffness));
+    specimens["first_third"] = num(sp.first_third);
+    specimens["last_third"] = num(sp.last_third);
+    specimens["own_zero"] = judged(sp.own_zero);
+    j["specimens"] = specimens;
   }
   Json events = Json::array(), by_force = Json::array();
   for (size_t i = 0; i < d.by_force_before.size() && i < d.by_force_after.size(); ++i) {
