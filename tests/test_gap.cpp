@@ -153,6 +153,27 @@ TEST(Gap, WithoutTheTrueEffectInTheLibraryItSaysUnexplained) {
   EXPECT_THAT(json, HasSubstr("\"verdict\":\"unexplained\""));
 }
 
+TEST(Gap, ASmallEffectAtTheNoiseButPlainInShapeIsNamed) {
+  // 0.0013 N*m more friction: a square wave of 0.0081 N at the effort,
+  // which lifts the RMSE to 1.08 times the 0.02 N of noise, within the
+  // noise estimate's tolerance (1.15). Over 20,000 samples its shape is
+  // plain (the residual is far from white), so it is looked for and named;
+  // without friction in the library, nothing explains it.
+  const fs::path file = lever_measurement("small", {0.0013, 0, 0});
+  const Diagnosis d = diagnose(load_measurement(file.string()));
+  EXPECT_GT(d.rmse_before, 0.02);
+  EXPECT_LT(d.rmse_before, 1.15 * d.noise_through_model) << report_text(d);
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  const EffectFit* f = find(d, EffectKind::pivot_friction);
+  ASSERT_NE(f, nullptr) << report_text(d);
+  EXPECT_NEAR(f->value[0], 0.0113, 0.0005);  // the nominal 0.01 plus the hidden 0.0013
+  DiagnoseOptions options;
+  options.library = {EffectKind::viscous_damping, EffectKind::spring_preload, EffectKind::progressive_spring,
+                     EffectKind::arm_inertia, EffectKind::gravity, EffectKind::sensor_latency};
+  const Diagnosis withheld = diagnose(load_measurement(file.string()), options);
+  EXPECT_EQ(withheld.verdict, Verdict::unexplained) << report_text(withheld);
+}
+
 TEST(Gap, TurningTheToolTellsItsWeightFromThePreload) {
   // 0.1 N*m of unmodelled weight (0.6 N at the effort), the tool held one
   // way up and then the other: the weight's torque changes sign, a
@@ -671,21 +692,21 @@ TEST(Gap, AProbeFindsTheLeverAndTheSpring) {
   EXPECT_NEAR(o.spring.constant, p.spring_constant, 1e-3 * p.spring_constant);
 }
 
-TEST(Gap, SpecimensOfOneShapeAndTheirOwnStiffness) {
-  // Three nuts between plates, each a Hertzian law of exponent 1.5 but
-  // 0.8, 1.0 and 1.3 times as stiff: F = a k r (d / r)^1.5 h / (h - d), with
-  // the macadamia's k = 1950 N/mm and h = 23.8 mm, r = 1 mm, written here.
-  // No one law fits them together (unexplained); each with a stiffness of
-  // its own, the exponent fitted on the other two is the shape's.
-  const fs::path dir = scratch("specimens");
-  const double scale[] = {0.8, 1.0, 1.3};
-  std::mt19937 random(7);
+// Three nuts between plates, each F = a k r ((d - z) / r)^n h / (h - (d - z))
+// past its zero z (0 before), with the macadamia's k = 1950 N/mm and
+// h = 23.8 mm, r = 1 mm, written here; `scale` (a) and `zero` (m) per nut,
+// the deflection to `most` (m), 0.5 N of noise. Returns the measurement.
+fs::path formula_nuts(const std::string& name, double exponent, const double (&scale)[3], const double (&zero)[3],
+                      double most, unsigned seed) {
+  const fs::path dir = scratch(name);
+  std::mt19937 random(seed);
   std::normal_distribution<double> noise(0.0, 0.5);  // N
   for (int n = 0; n < 3; ++n) {
     std::string csv = "t,displacement,force\n";
     for (int i = 0; i <= 200; ++i) {
-      const double d = 0.8e-3 * i / 200, k = 1950e3, r = 1e-3, h = 23.8e-3;  // m, N/m
-      const double force = scale[n] * k * r * std::pow(d / r, 1.5) * h / (h - d);
+      const double d = most * i / 200, k = 1950e3, r = 1e-3, h = 23.8e-3;  // m, N/m
+      const double x = d - zero[n];
+      const double force = x > 0 ? scale[n] * k * r * std::pow(x / r, exponent) * h / (h - x) : 0.0;
       char row[96];
       std::snprintf(row, sizeof row, "%.3f,%.9g,%.6f\n", 0.025 * i, d, force + noise(random));
       csv += row;
@@ -694,7 +715,16 @@ TEST(Gap, SpecimensOfOneShapeAndTheirOwnStiffness) {
   }
   write(dir / "m.yaml", "measurement: nuts\nrig: plates\nactee: {file: " + kSource +
                             "/actees/macadamia.yaml}\ntraces: [n0.csv, n1.csv, n2.csv]\n");
-  const Diagnosis d = diagnose(load_measurement((dir / "m.yaml").string()));
+  return dir / "m.yaml";
+}
+
+TEST(Gap, SpecimensOfOneShapeAndTheirOwnStiffness) {
+  // Three Hertzian nuts (exponent 1.5), 0.8, 1.0 and 1.3 times as stiff.
+  // No one law fits them together (unexplained); each with a stiffness of
+  // its own, the exponent fitted on the other two is the shape's.
+  const double scale[] = {0.8, 1.0, 1.3}, zero[] = {0, 0, 0};
+  const fs::path file = formula_nuts("specimens", 1.5, scale, zero, 0.8e-3, 7);
+  const Diagnosis d = diagnose(load_measurement(file.string()));
   EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
   ASSERT_TRUE(d.specimens.computed) << report_text(d);
   const ShapeJudged& s = d.specimens.own_stiffness;
@@ -714,30 +744,12 @@ TEST(Gap, SpecimensOfOneShapeAndTheirOwnStiffness) {
 }
 
 TEST(Gap, SpecimensSeatedPastTheirZero) {
-  // Three nuts of one law, exponent 1.3, each 0.8, 1.0 and 1.3 times as
-  // stiff and each bearing only from 0, 0.1 and 0.25 mm past its trace's
-  // zero: F = a k r ((d - z) / r)^1.3 h / (h - (d - z)) for d > z, written
-  // here. Judged with its own zero, each nut's is found and the exponent
-  // is the law's; judged without, the toe reads as a larger exponent.
-  const fs::path dir = scratch("seated");
+  // Three nuts of exponent 1.3, 0.8, 1.0 and 1.3 times as stiff, bearing
+  // only from 0, 0.1 and 0.25 mm past their traces' zero. Judged with its
+  // own zero, each nut's is found and the exponent is the law's; judged
+  // without, the toe reads as a larger exponent.
   const double scale[] = {0.8, 1.0, 1.3}, zero[] = {0.0, 0.1e-3, 0.25e-3};
-  std::mt19937 random(11);
-  std::normal_distribution<double> noise(0.0, 0.5);  // N
-  for (int n = 0; n < 3; ++n) {
-    std::string csv = "t,displacement,force\n";
-    for (int i = 0; i <= 200; ++i) {
-      const double d = 0.9e-3 * i / 200, k = 1950e3, r = 1e-3, h = 23.8e-3;  // m, N/m
-      const double x = d - zero[n];
-      const double force = x > 0 ? scale[n] * k * r * std::pow(x / r, 1.3) * h / (h - x) : 0.0;
-      char row[96];
-      std::snprintf(row, sizeof row, "%.3f,%.9g,%.6f\n", 0.025 * i, d, force + noise(random));
-      csv += row;
-    }
-    write(dir / ("n" + std::to_string(n) + ".csv"), csv);
-  }
-  write(dir / "m.yaml", "measurement: nuts\nrig: plates\nactee: {file: " + kSource +
-                            "/actees/macadamia.yaml}\ntraces: [n0.csv, n1.csv, n2.csv]\n");
-  const Diagnosis d = diagnose(load_measurement((dir / "m.yaml").string()));
+  const Diagnosis d = diagnose(load_measurement(formula_nuts("seated", 1.3, scale, zero, 0.9e-3, 11).string()));
   ASSERT_TRUE(d.specimens.computed) << report_text(d);
   const ShapeJudged& seated = d.specimens.own_zero;
   EXPECT_NEAR(seated.exponent, 1.3, 5e-3) << report_text(d);
