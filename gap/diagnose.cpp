@@ -192,7 +192,7 @@ std::vector<double> autocovariance(const std::vector<Replay>& replays, const std
 
 ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& residual,
                        const std::vector<size_t>& which, const std::vector<std::vector<double>>* noise) {
-  size_t n = 0, n_noise = 0;
+  size_t n = 0, n_noise = 0;  // the noise's count is the residual's: the same samples
   const std::vector<double> ck = autocovariance(replays, residual, which, &n);
   // The angle's noise through the model is not white (the rates are
   // polynomial fits over a window): its own autocovariance, from the same
@@ -389,16 +389,18 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   const Scored nominal_scored = score({});
   const SetFit& nominal = nominal_scored.fit;
   d.rmse_before = nominal.rmse_test;
-  // Matched to the noise over every held-out sample, and over those in the
-  // actee's contact.
-  auto matched = [&](const Scored& f) {
-    const double floor = kMatched * floor_of(f.fit);
+  // Within `factor` times the noise floor over every held-out sample, and
+  // over those in the actee's contact: at the floor (1), or matched to it
+  // within the tolerance of the noise's own estimate (kMatched).
+  auto within = [&](const Scored& f, double factor) {
+    const double floor = factor * floor_of(f.fit);
     return f.fit.rmse_test <= floor && f.rmse_contact <= floor;
   };
-  // The nominal residual of every trace, each sample's in units of the
-  // effort sensor's noise (times the square root of its weight), so that
-  // the tests of structure and the phases' shares see the samples as the
-  // fits weigh them.
+  auto matched = [&](const Scored& f) { return within(f, kMatched); };
+  // A set's residual of every trace, each sample's in units of the effort
+  // sensor's noise (times the square root of its weight), so that the tests
+  // of structure and the phases' shares see the samples as the fits weigh
+  // them.
   auto weighed_residual = [&](const SetFit& fit) {
     std::vector<std::vector<double>> out;
     for (size_t i = 0; i < replays.size(); ++i) {
@@ -426,14 +428,10 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // exact) with a white residual. Within kMatched but structured is a
   // small effect over many samples, its RMSE near the noise but its shape
   // plain: the search asks whether a candidate explains it.
-  auto at_floor = [&](const Scored& f) {
-    const double floor = floor_of(f.fit);
-    return f.fit.rmse_test <= floor && f.rmse_contact <= floor;
-  };
   const bool nominal_within = matched(nominal_scored);
   const std::vector<std::vector<double>> noise_before = noise_through(nominal);
   const bool nominal_matched =
-      at_floor(nominal_scored) || (nominal_within && whiteness(replays, before, all, &noise_before).white);
+      within(nominal_scored, 1.0) || (nominal_within && whiteness(replays, before, all, &noise_before).white);
   // Effects added match once within the tolerance, where the nominal model
   // was not. Where it was, the gap is its structure, and what explains it
   // leaves a white residual: a look-alike that trims it to the floor and
