@@ -85,20 +85,36 @@ std::vector<Replay> replay_with_input_noise(const Model& model, Measurement m, c
   return split ? halves(replays.front()) : replays;
 }
 
-// How much of the motion's noise a fitted set passes into its prediction
-// (N, RMS, the samples weighed as the fits weigh them): the model predicts
-// from the measured angle, its rate and its acceleration, and
+// The motion's noise that a fitted set passes into its prediction, at each
+// sample of each replay (N times the root of the sample's weight, as the
+// residuals are weighed; 0 where either replay is not fitted): the model
+// predicts from the measured angle, its rate and its acceleration, and
 // differentiating twice makes an arm's inertia pass the angle's noise on
-// many times over. The two predictions, from the motion
-// as measured and with as much noise again, differ by the noise's share.
-double propagated_noise(const Fitter& measured, const Fitter& noisier, const std::vector<Replay>& a,
-                        const std::vector<Replay>& b, const SetFit& set) {
-  double sq = 0, weights = 0;
+// many times over. The two predictions, from the motion as measured and
+// with as much noise again, differ by the noise's share.
+std::vector<std::vector<double>> noise_through(const Fitter& measured, const Fitter& noisier,
+                                               const std::vector<Replay>& a, const std::vector<Replay>& b,
+                                               const SetFit& set) {
+  std::vector<std::vector<double>> out;
   for (size_t i = 0; i < a.size(); ++i) {
     const std::vector<double> ea = measured.residual(set, i), eb = noisier.residual(set, i);
+    out.emplace_back(ea.size(), 0.0);
     for (size_t s = 0; s < ea.size(); ++s) {
+      if (a[i].fitted[s] && b[i].fitted[s]) out.back()[s] = (ea[s] - eb[s]) * std::sqrt(a[i].weight[s]);
+    }
+  }
+  return out;
+}
+
+// Its RMS (N) over the samples both replays fit, weighed as the fits weigh them.
+double propagated_noise(const Fitter& measured, const Fitter& noisier, const std::vector<Replay>& a,
+                        const std::vector<Replay>& b, const SetFit& set) {
+  const std::vector<std::vector<double>> noise = noise_through(measured, noisier, a, b, set);
+  double sq = 0, weights = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    for (size_t s = 0; s < noise[i].size(); ++s) {
       if (!a[i].fitted[s] || !b[i].fitted[s]) continue;
-      sq += a[i].weight[s] * (ea[s] - eb[s]) * (ea[s] - eb[s]);
+      sq += noise[i][s] * noise[i][s];
       weights += a[i].weight[s];
     }
   }
@@ -410,26 +426,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     return out;
   };
   const std::vector<std::vector<double>> before = weighed_residual(nominal);
-  // The angle's noise through a set's predictions, weighed as its residual:
-  // the extra noise of the noisier replay, where both are fitted.
-  auto noise_through = [&](const SetFit& fit) {
-    std::vector<std::vector<double>> out;
-    for (size_t i = 0; i < replays.size(); ++i) {
-      const std::vector<double> ea = fitter.residual(fit, i), eb = noisier_fitter.residual(fit, i);
-      out.emplace_back(ea.size(), 0.0);
-      for (size_t s = 0; s < ea.size(); ++s) {
-        if (replays[i].fitted[s] && noisier[i].fitted[s]) out.back()[s] = (ea[s] - eb[s]) * std::sqrt(replays[i].weight[s]);
-      }
-    }
-    return out;
-  };
   // The nominal model matches to the noise when its held-out RMSE is at
   // the noise, or within kMatched of it (the noise's own estimate is not
   // exact) with a white residual. Within kMatched but structured is a
   // small effect over many samples, its RMSE near the noise but its shape
   // plain: the search asks whether a candidate explains it.
   const bool nominal_within = matched(nominal_scored);
-  const std::vector<std::vector<double>> noise_before = noise_through(nominal);
+  const std::vector<std::vector<double>> noise_before = noise_through(fitter, noisier_fitter, replays, noisier, nominal);
   const bool nominal_matched =
       within(nominal_scored, 1.0) || (nominal_within && whiteness(replays, before, all, &noise_before).white);
   // Effects added match once within the tolerance, where the nominal model
@@ -537,7 +540,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   d.shrink = was > 0 ? 1 - now / was : 0.0;
 
   const std::vector<std::vector<double>> after = weighed_residual(current);
-  const std::vector<std::vector<double>> noise_after = noise_through(current);
+  const std::vector<std::vector<double>> noise_after = noise_through(fitter, noisier_fitter, replays, noisier, current);
   d.residual = whiteness(replays, after, all, &noise_after);
   d.rig = m.rig;
   d.curves = held_out_curves(replays, fitter, nominal, fold_fitters, judged, chosen);
