@@ -11,6 +11,7 @@
 #include "force_replay.h"
 #include "measurement.h"
 #include "replay.h"
+#include "residual_tests.h"
 #include "specimens.h"
 
 namespace afford {
@@ -24,15 +25,6 @@ struct PhaseShare {
   double before = 0, after = 0;  // share of the squared residual, 0..1
 };
 
-// The whiteness of the held-out residual (Ljung-Box over 20 lags) and what
-// it moves with.
-struct ResidualTest {
-  double q = 0;          // the Ljung-Box statistic
-  double threshold = 0;  // its 99 % point for white noise
-  bool white = false;
-  std::string follows;   // the signal it correlates with most ("the direction of motion", ...)
-  double correlation = 0;
-};
 
 // When one model does not fit the traces together: the best effect fitted
 // to each trace alone (in sample), to tell specimens that differ from one
