@@ -38,11 +38,9 @@ struct Outcome {
   // how far it moved and turned from its start by its crack or the end.
   double mujoco_moved = 0, mujoco_turned = 0;  // m, rad
   // Where the load acts: afford's lever arm of the actee's push (D_ac),
-  // and each frame MuJoCo's, the force-weighted arm about the hinge of the
-  // actee's contacts with the moving arm, and how many contacts the actee
-  // has with each arm.
+  // and MuJoCo's in the last frame before its crack or the end.
   double afford_arm = 0;  // m
-  std::vector<MujocoPush> mujoco_push;
+  MujocoPush mujoco_push;
 };
 
 // An afford run's side of the outcome: the actee's load each frame, its
@@ -61,12 +59,11 @@ class LoadTrace : public Observer {
   Outcome* out_;
 };
 
-// MuJoCo's actee against the tool now.
-MujocoPush mujoco_push(MujocoScene& scene) {
+// MuJoCo's actee against the tool now; the ids of the actee's and the
+// moving arm's bodies and of the hinge.
+MujocoPush mujoco_push(MujocoScene& scene, int actee, int moving, int hinge) {
   const mjModel* m = scene.model();
   const mjData* d = scene.data();
-  const int actee = mj_name2id(m, mjOBJ_BODY, "actee"), moving = mj_name2id(m, mjOBJ_BODY, "moving_arm");
-  const int hinge = mj_name2id(m, mjOBJ_JOINT, "hinge");
   const Eigen::Vector3d anchor(d->xanchor + 3 * hinge), axis(d->xaxis + 3 * hinge);
   MujocoPush push;
   double force = 0, moment = 0;
@@ -157,6 +154,9 @@ int crosscheck(const std::string& source, int threads) {
     const mjtNum* q = scene.data()->qpos + scene.model()->jnt_qposadr[mj_name2id(scene.model(), mjOBJ_JOINT, "actee")];
     const Eigen::Vector3d start_pos(q[0], q[1], q[2]);
     const Eigen::Quaterniond start_quat(q[3], q[4], q[5], q[6]);
+    const int actee_body = mj_name2id(scene.model(), mjOBJ_BODY, "actee");
+    const int moving_body = mj_name2id(scene.model(), mjOBJ_BODY, "moving_arm");
+    const int hinge = mj_name2id(scene.model(), mjOBJ_JOINT, "hinge");
     for (int k = 1; k <= frames; ++k) {
       const double load = scene.actee_load();
       const bool broke = scene.frame();
@@ -168,7 +168,7 @@ int crosscheck(const std::string& source, int threads) {
       }
       out[i].mujoco_load = std::max(out[i].mujoco_load, std::max(load, scene.actee_load()));
       out[i].mujoco_loads.push_back(scene.actee_load());
-      out[i].mujoco_push.push_back(mujoco_push(scene));
+      out[i].mujoco_push = mujoco_push(scene, actee_body, moving_body, hinge);
     }
   });
 
@@ -234,7 +234,7 @@ int crosscheck(const std::string& source, int threads) {
     const double load = load_at(later, first, step);
     const double rate = (load_at(later, last - step, step) - load_at(later, last - 0.020, step)) / (0.020 - step);  // N/s
     largest_shortfall = std::max(largest_shortfall, 1 - load / limit);
-    const MujocoPush push = o.mujoco_push.empty() ? MujocoPush{} : o.mujoco_push.back();  // before MuJoCo's crack
+    const MujocoPush& push = o.mujoco_push;
     // Where the loads part: when each first passes a tenth and a half of the limit.
     const double tenth_a = first_past(o.afford_loads, 0.1 * limit, step), tenth_m = first_past(o.mujoco_loads, 0.1 * limit, step);
     const double half_a = first_past(o.afford_loads, 0.5 * limit, step), half_m = first_past(o.mujoco_loads, 0.5 * limit, step);
