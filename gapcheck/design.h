@@ -1,0 +1,103 @@
+// A withheld case's measurement design, drawn at random from its seed:
+// which tool, how many traces and how each is driven and held, what is in
+// the jaws, how noisy and coarse the sensors are, and what the real tool
+// has beyond its file (in the library, or outside it). Two realities play
+// the same designs (reality.h): MuJoCo and ODE, each with its own contact
+// and friction. Nothing here or in a reality calls afford's solver, its
+// torque terms, its actee law or the gap library to make data.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "truth.h"
+
+namespace gapcheck {
+
+// How the hand's servo target moves between `high` and `low` (rad).
+enum class DriveShape {
+  sine,             // a sine of one period
+  uneven_triangle,  // straight ramps, closing for `closing_share` of each period
+  ramp_and_hold,    // ramp down, hold, ramp up, hold (each a quarter)
+  smooth_random,    // a sum of sines of random phase up to 3 / period Hz, from `shape_seed`
+};
+const char* drive_shape_name(DriveShape s);
+
+struct Drive {
+  DriveShape shape = DriveShape::sine;
+  double period = 1;          // s, 0.3 to 5
+  double seconds = 4;         // s, the trace's length
+  double turned = 0;          // rad, the tool turned about its hinge (gravity turns with it)
+  double high = 0, low = 0;   // rad, the servo target's range (high: open)
+  double closing_share = 0.5; // uneven_triangle: the share of a period spent closing
+  unsigned shape_seed = 0;    // smooth_random
+  // closing-only strokes: the target falls from high to low and then jumps
+  // back (the hand lets go and the spring reopens the tool unseen): only
+  // closing is measured.
+  bool closing_only = false;
+  // The servo target at time t (rad): starts at `high`, between low and high.
+  double target(double t) const;
+};
+
+// What is between the jaws, and what happens to it.
+enum class ActeeScenario {
+  none,               // no actee: free drives
+  light_squeeze,      // squeezed to well below its limit
+  crack_first_cycle,  // cracks in the first cycle; the tool goes on opening and closing
+  crack_at_end,       // cracks in the last closing of the trace
+  closing_only,       // no actee, closing-only strokes
+};
+const char* actee_scenario_name(ActeeScenario s);
+
+// The sensors: white noise of these deviations, then quantised to these
+// steps (0: not quantised).
+struct Sensors {
+  double effort_noise = 0.02;   // N, 0.02 to 0.2
+  double angle_noise = 1e-4;    // rad, 1e-4 to 5e-4
+  double actee_noise = 0.1;     // N
+  double effort_quantum = 0;    // N
+  double angle_quantum = 0;     // rad
+  double actee_quantum = 0;     // N
+};
+
+// Effects outside afford's library: a diagnosis must say `unexplained`.
+struct Outside {
+  double backlash = 0;           // rad, free play at the pivot: the arm moves this far before the spring turns
+  double detent_torque = 0;      // N*m, a bump of this height ...
+  double detent_angle = 0;       // rad, ... centred here ...
+  double detent_width = 0;       // rad, ... this wide (a Gaussian's deviation)
+  double gain_error = 0;         // the force sensor reads (1 + gain_error) times the force
+  double offset_drift = 0;       // N/s, the force sensor's zero drifts by this much a second
+  double viscoelastic_share = 0; // of the actee's contact force that relaxes ...
+  double viscoelastic_tau = 0;   // s, ... with this time constant (a standard linear solid)
+  bool any() const;
+  std::string name() const;      // "backlash", "detent", "sensor_gain", "offset_drift", "viscoelastic_actee"; "" if none
+};
+
+// One case: a tool (its nominal file's numbers, truth.h), the truth beyond
+// the file, the design.
+struct Case {
+  std::string name;            // unique in a set
+  std::string group;           // the design group the scorer reports by: actee_scenario_name, "+turned" if several orientations
+  Tool tool;                   // tool.file: the nominal object file the measurement names
+  Truth truth;                 // effects of the library (labels: truth.names())
+  Outside outside;             // effects outside it (label: unexplained)
+  ActeeScenario scenario = ActeeScenario::none;
+  std::vector<Drive> drives;   // 1 to 4 traces
+  Sensors sensors;
+};
+
+// The label the scorer reads: the true names joined by '+', sorted;
+// "none"; or "outside:NAME".
+std::string label_of(const Case& c);
+
+// One 1 kHz sample of a played drive, as the sensors read it.
+struct Measured {
+  double t = 0;        // s
+  double angle = 0;    // rad
+  double effort = 0;   // N, at the emphasis, closing positive
+  double actee = 0;    // N, the load cell under the actee (0 without one)
+  bool broken = false; // the actee has given way
+};
+
+}  // namespace gapcheck
