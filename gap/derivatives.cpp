@@ -22,6 +22,7 @@ Derivatives local_derivatives(const std::vector<double>& t, const std::vector<do
   Derivatives d;
   d.rate.resize(n);
   d.accel.resize(n);
+  d.misfit.resize(n);
   d.half_width = m;
   const long w = static_cast<long>(2 * m + 1);
   // The fit's coefficients as weights on the window's samples, for a
@@ -44,6 +45,10 @@ Derivatives local_derivatives(const std::vector<double>& t, const std::vector<do
   const Eigen::MatrixXd even = cov * a.transpose();  // coefficients = even * window
   d.rate_noise_gain = degree >= 1 ? std::sqrt(cov(1, 1)) / even_h : 0.0;
   d.accel_noise_gain = degree >= 2 ? 2 * std::sqrt(cov(2, 2)) / (even_h * even_h) : 0.0;
+  // What the polynomial leaves of the window: (I - A (A'A)^-1 A') b; pure
+  // noise leaves (w - degree - 1) / w of its variance.
+  const Eigen::MatrixXd leaves = Eigen::MatrixXd::Identity(w, w) - a * even;
+  d.misfit_noise_gain = std::sqrt(static_cast<double>(w - degree - 1) / static_cast<double>(w));
   Eigen::VectorXd b(w);
   for (size_t i = 0; i < n; ++i) {
     // The window keeps its width at the ends, shifted inside the trace.
@@ -58,11 +63,13 @@ Derivatives local_derivatives(const std::vector<double>& t, const std::vector<do
     double h = even_h;
     if (evenly) {
       c = even.topRows(std::min(degree + 1, 3)) * b;
+      d.misfit[i] = std::sqrt((leaves * b).squaredNorm() / static_cast<double>(w));
     } else {
       // Times relative to sample i, scaled by the window for conditioning.
       h = std::max(t[from + 2 * m] - t[from], 1e-300) / 2;
       design(from, i, h);
       c = a.colPivHouseholderQr().solve(b);
+      d.misfit[i] = std::sqrt((b - a * c).squaredNorm() / static_cast<double>(w));
     }
     d.rate[i] = degree >= 1 ? c(1) / h : 0.0;
     d.accel[i] = degree >= 2 ? 2 * c(2) / (h * h) : 0.0;

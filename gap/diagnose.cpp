@@ -17,70 +17,115 @@ constexpr double kNearlyAsFar = 0.9;    // or one that cuts the mean squared err
 constexpr int kMaxEffects = 3;
 constexpr size_t kFolds = 5;            // cross-validation folds, at most
 
-// A single trace is cut in two: fit on its first half, judge on its second.
-std::vector<Replay> halves(const Replay& r) {
-  std::vector<Replay> out(2);
-  const size_t mid = r.t.size() / 2;
-  auto slice = [&](Replay& h, size_t from, size_t to) {
-    auto cut = [&](const auto& v) { return std::decay_t<decltype(v)>(v.begin() + static_cast<long>(from), v.begin() + static_cast<long>(to)); };
-    h.file = r.file + (from == 0 ? " (first half)" : " (second half)");
-    h.turned = r.turned;
-    h.x_noise = r.x_noise;
-    h.rate_noise = r.rate_noise;
-    h.accel_noise = r.accel_noise;
-    h.rig = r.rig;
-    h.to_newtons = r.to_newtons;
-    h.t = cut(r.t);
-    h.x = cut(r.x);
-    h.rate = cut(r.rate);
-    h.accel = cut(r.accel);
-    h.measured = cut(r.measured);
-    h.nominal = cut(r.nominal);
-    h.deflection = cut(r.deflection);
-    h.slope = cut(r.slope);
-    if (!r.actee_measured.empty()) {
-      h.actee_measured = cut(r.actee_measured);
-      h.actee_nominal = cut(r.actee_nominal);
-    }
-    h.phase = cut(r.phase);
-    h.fitted = cut(r.fitted);
+constexpr size_t kBlocks = 4;           // blocks cut from a measurement's traces, about (at least one a trace)
+constexpr size_t kMinBlock = 200;       // fitted samples: a block with fewer joins its neighbour
+
+// Samples from..to of a replay: a block of its trace, judged on its own.
+Replay slice(const Replay& r, size_t from, size_t to) {
+  auto cut = [&](const auto& v) {
+    return std::decay_t<decltype(v)>(v.begin() + static_cast<long>(from), v.begin() + static_cast<long>(to));
   };
-  slice(out[0], 0, mid);
-  slice(out[1], mid, r.t.size());
+  Replay h;
+  char label[96];
+  std::snprintf(label, sizeof label, " (%.3f to %.3f s)", r.t[from], r.t[to - 1]);
+  h.file = r.file + label;
+  h.turned = r.turned;
+  h.x_noise = r.x_noise;
+  h.rate_noise = r.rate_noise;
+  h.accel_noise = r.accel_noise;
+  h.resolution = r.resolution;
+  h.rig = r.rig;
+  h.to_newtons = r.to_newtons;
+  h.break_at = r.break_at == SIZE_MAX ? SIZE_MAX : (r.break_at <= from ? 0 : r.break_at - from);
+  h.t = cut(r.t);
+  h.x = cut(r.x);
+  h.rate = cut(r.rate);
+  h.accel = cut(r.accel);
+  h.measured = cut(r.measured);
+  h.nominal = cut(r.nominal);
+  h.deflection = cut(r.deflection);
+  h.slope = cut(r.slope);
+  h.weight = cut(r.weight);
+  if (!r.actee_measured.empty()) {
+    h.actee_measured = cut(r.actee_measured);
+    h.actee_nominal = cut(r.actee_nominal);
+  }
+  h.phase = cut(r.phase);
+  h.fitted = cut(r.fitted);
+  return h;
+}
+
+// Where the traces are cut for cross-validation: each trace into
+// contiguous blocks with about equal numbers of fitted samples (never at
+// its middle in time: an actee that breaks early leaves its first half
+// all but unfitted), kBlocks in all about, a block of fewer than
+// kMinBlock fitted samples joined to its neighbour.
+struct Block {
+  size_t trace = 0, from = 0, to = 0;
+};
+std::vector<Block> blocks_of(const std::vector<Replay>& replays) {
+  std::vector<Block> out;
+  const size_t wanted = std::max<size_t>(1, (kBlocks + replays.size() / 2) / replays.size());
+  for (size_t i = 0; i < replays.size(); ++i) {
+    const Replay& r = replays[i];
+    const auto fitted = static_cast<size_t>(std::count(r.fitted.begin(), r.fitted.end(), true));
+    const size_t blocks = std::clamp<size_t>(fitted / kMinBlock, 1, wanted);
+    size_t from = 0, seen = 0;
+    for (size_t b = 1; b < blocks; ++b) {
+      const size_t until = fitted * b / blocks;  // fitted samples before the cut
+      size_t to = from;
+      while (to < r.t.size() && seen < until) seen += r.fitted[to++] ? 1 : 0;
+      out.push_back({i, from, to});
+      from = to;
+    }
+    out.push_back({i, from, r.t.size()});
+  }
+  return out;
+}
+
+std::vector<Replay> sliced(const std::vector<Replay>& replays, const std::vector<Block>& blocks) {
+  std::vector<Replay> out;
+  for (const Block& b : blocks) {
+    const Replay& r = replays[b.trace];
+    out.push_back(b.from == 0 && b.to == r.t.size() ? r : slice(r, b.from, b.to));
+  }
   return out;
 }
 
 // The measurement's own noise: white noise of deviation s gives second
 // differences of deviation s * sqrt(6); a smooth signal adds little to them.
 // Their median absolute deviation (times 1.4826 for a normal law) is not
-// moved by the few jumps of a signal, where friction changes sign.
+// moved by the few jumps of a signal, where friction changes sign. Never
+// below what the file's printed digits resolve: a noise-free trace is
+// still rounded, and an effect that leaves only that is explained.
 double noise_of(const std::vector<Replay>& replays) {
   std::vector<double> d2;
+  double resolution = 0;
   for (const Replay& r : replays) {
+    resolution = std::max(resolution, r.resolution);
     for (size_t i = 0; i + 2 < r.t.size(); ++i) {
       if (!r.fitted[i] || !r.fitted[i + 1] || !r.fitted[i + 2]) continue;
       d2.push_back(std::abs(r.measured[i] - 2 * r.measured[i + 1] + r.measured[i + 2]) * r.to_newtons);
     }
   }
-  if (d2.empty()) return 0.0;
+  if (d2.empty()) return resolution;
   auto mid = d2.begin() + static_cast<long>(d2.size() / 2);
   std::nth_element(d2.begin(), mid, d2.end());
-  return 1.4826 * *mid / std::sqrt(6.0);
+  return std::max(1.4826 * *mid / std::sqrt(6.0), resolution);
 }
 
 // The measurement replayed with as much noise again added to its angles
 // (or displacements), from a fixed seed: the same measurement as the
 // model sees it through a second, independent sensor of the motion.
 std::vector<Replay> replay_with_input_noise(const Model& model, Measurement m, const std::vector<double>& deviation,
-                                           bool split) {
+                                           const std::vector<Block>& blocks) {
   std::mt19937 random(20261123);
   std::normal_distribution<double> noise(0.0, 1.0);
   const Signal x = m.rig == Rig::lever ? Signal::angle : Signal::displacement;
   for (size_t i = 0; i < m.traces.size(); ++i) {
     for (double& v : m.traces[i][x]) v += deviation[i] * noise(random);
   }
-  std::vector<Replay> replays = m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m);
-  return split ? halves(replays.front()) : replays;
+  return sliced(m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m), blocks);
 }
 
 // The motion's noise that a fitted set passes into its prediction, at each
@@ -176,16 +221,17 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   Diagnosis d;
   d.measurement = m.name;
   const Model model = m.rig == Rig::lever ? compile_measurement(m) : compile_actee_only(*m.actee, m.options);
-  std::vector<Replay> replays = m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m);
-  const bool split = replays.size() == 1;
+  // The traces whole, and cut into blocks for cross-validation: each fold's
+  // blocks are judged by a fit on the others; the parameters reported come
+  // from a fit on every trace.
+  std::vector<Replay> whole = m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m);
   std::vector<double> x_noise;  // each trace's motion sensor's
-  for (const Replay& r : replays) x_noise.push_back(r.x_noise);
-  // Cross-validation: each fold's traces are judged by a fit on the others
-  // (a single trace is cut in halves, each judged by the other); the
-  // parameters reported come from a fit on every trace.
-  if (split) replays = halves(replays.front());
+  for (const Replay& r : whole) x_noise.push_back(r.x_noise);
+  const std::vector<Block> blocks = blocks_of(whole);
+  std::vector<Replay> replays = sliced(whole, blocks);
   d.noise = noise_of(replays);
   weigh(replays, d.noise);
+  weigh(whole, d.noise);
   const size_t folds = std::min<size_t>(replays.size(), kFolds);
   std::vector<size_t> all(replays.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = i;
@@ -198,8 +244,17 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   }
   for (const Replay& r : replays) d.judged_on.push_back(r.file);
   d.folds = folds;
+  d.traces = whole.size();
+  for (size_t f = 0; f < folds; ++f) {
+    FoldSize fs;
+    for (size_t i : judged[f]) {
+      ++fs.blocks;
+      fs.fitted += static_cast<size_t>(std::count(replays[i].fitted.begin(), replays[i].fitted.end(), true));
+    }
+    d.fold_sizes.push_back(fs);
+  }
   const Fitter fitter(model, replays, all, {});
-  std::vector<Replay> noisier = replay_with_input_noise(model, m, x_noise, split);
+  std::vector<Replay> noisier = replay_with_input_noise(model, m, x_noise, blocks);
   for (size_t i = 0; i < noisier.size(); ++i) noisier[i].weight = replays[i].weight;
   const Fitter noisier_fitter(model, noisier, all, {});
   // What the model cannot match better than: the effort's noise and the
@@ -391,6 +446,22 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       if (effects_match(current_scored)) break;
     }
   }
+  // Before naming: can the fitted samples tell the chosen effects from
+  // the other candidates at all? If not, every look-alike set is as good,
+  // and the report says which measurement would separate them.
+  if (!chosen.empty()) {
+    d.look_alikes = look_alikes(fitter, chosen, library);
+    if (!d.look_alikes.empty() && d.ambiguous.empty()) d.ambiguous.push_back(chosen);
+    for (const LookAlike& l : d.look_alikes) {
+      std::vector<EffectKind> set = chosen;
+      std::replace(set.begin(), set.end(), l.chosen, l.alike);
+      if (std::find(d.ambiguous.begin(), d.ambiguous.end(), set) == d.ambiguous.end()) d.ambiguous.push_back(set);
+      std::snprintf(line, sizeof line, "  the data cannot tell %s from %s (their columns' cosine %.4f): ",
+                    manifest_of(l.chosen).name, manifest_of(l.alike).name, l.cosine);
+      d.steps.push_back(line + l.separate);
+      ambiguous = true;
+    }
+  }
   d.effects = current.effects;
   d.noise_through_model = floor_of(current);
   d.rmse_after = current.rmse_test;
@@ -430,8 +501,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       }
     }
     double sq_nominal = 0, sq_alone = 0, weights = 0;
-    for (size_t i = 0; i < replays.size(); ++i) {
-      const Fitter own(model, replays, {i}, {i});
+    for (size_t i = 0; i < whole.size(); ++i) {
+      const Fitter own(model, whole, {i}, {i});
       const SetFit a = own.fit({}), b = own.fit({pt.effect});
       sq_nominal += a.rmse_test * a.rmse_test * a.w_test;
       sq_alone += b.rmse_test * b.rmse_test * b.w_test;
@@ -443,7 +514,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     pt.rmse_alone = weights > 0 ? std::sqrt(sq_alone / weights) : 0.0;
     // Each alone wants a power law: is its shape shared, with each
     // specimen's stiffness its own?
-    if (pt.computed && pt.effect == EffectKind::actee_compliance) d.specimens = specimen_shape(fitter, replays);
+    if (pt.computed && pt.effect == EffectKind::actee_compliance) {
+      std::vector<size_t> every(whole.size());
+      for (size_t i = 0; i < every.size(); ++i) every[i] = i;
+      d.specimens = specimen_shape(Fitter(model, whole, every, {}), whole);
+    }
   }
 
   // By force: what the effort makes of the angle and the actee, nominal

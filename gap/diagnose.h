@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fit.h"
+#include "look_alikes.h"
 #include "force_replay.h"
 #include "measurement.h"
 #include "replay.h"
@@ -48,11 +49,18 @@ struct HeldOutCurve {
   std::vector<Phase> phase;
 };
 
+// One fold of the cross-validation: how many blocks of the traces it
+// judges, and how many fitted samples they hold.
+struct FoldSize {
+  size_t blocks = 0, fitted = 0;
+};
+
 struct Diagnosis {
   std::string measurement;
   Verdict verdict = Verdict::none;
   std::vector<EffectFit> effects;                  // the effects adopted
   std::vector<std::vector<EffectKind>> ambiguous;  // sets that fit as well, when ambiguous
+  std::vector<LookAlike> look_alikes;              // what the data cannot tell the named effects from
   double noise = 0;                                // N, the measurement's own noise, estimated
   double noise_through_model = 0;                  // N, with the motion's noise through the adopted model
   double rmse_before = 0, rmse_after = 0;          // N, on the held-out traces
@@ -71,8 +79,10 @@ struct Diagnosis {
   PerTrace per_trace;                              // with an unexplained verdict over several traces
   SpecimenShape specimens;                         // and there, when each trace alone wants the actee's power law
   std::vector<ForceGap> by_force_before, by_force_after;  // lever: replayed by force, nominal and fitted
-  std::vector<std::string> judged_on;              // traces (a single trace: its halves), each judged
-  size_t folds = 0;                                // by a fit on the traces outside its fold
+  std::vector<std::string> judged_on;              // the blocks of the traces (gap/README.md), each judged
+  size_t folds = 0;                                // by a fit on the blocks outside its fold
+  std::vector<FoldSize> fold_sizes;                // per fold
+  size_t traces = 0;                               // the measurement's
   std::vector<std::string> steps;                  // the selection, step by step
   Rig rig = Rig::lever;
   std::vector<HeldOutCurve> curves;                // every judged trace, for the plots

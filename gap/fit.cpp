@@ -125,6 +125,26 @@ Fitter::Fitter(const Model& model, const std::vector<Replay>& replays, std::vect
   }
 }
 
+std::vector<double> Fitter::weighed_column(EffectKind k) const {
+  std::vector<double> out;
+  if (k == EffectKind::actee_compliance) return out;
+  for (size_t i : train_) {
+    const Replay& r = replays_[i];
+    if (r.rig != Rig::lever) continue;
+    for (size_t s : fitted_[i]) {
+      double v = 0;
+      if (k == EffectKind::sensor_latency) {
+        const size_t a = s > 0 ? s - 1 : s, b = s + 1 < r.t.size() ? s + 1 : s;
+        v = b > a ? -(r.nominal[b] - r.nominal[a]) / (r.t[b] - r.t[a]) : 0.0;
+      } else {
+        v = phi_[i][static_cast<size_t>(k)][s];
+      }
+      out.push_back(v * r.to_newtons * std::sqrt(r.weight[s]));
+    }
+  }
+  return out;
+}
+
 std::vector<EffectKind> Fitter::candidates() const {
   std::vector<EffectKind> out;
   const bool lever = !replays_.empty() && replays_.front().rig == Rig::lever;

@@ -60,6 +60,14 @@ class Fitter {
   // The candidates that apply to this rig.
   std::vector<EffectKind> candidates() const;
 
+  // Effect k's column over the fitted samples of the training replays, one
+  // after another: its torque per unit of its parameter in N at the effort,
+  // times the root of each sample's weight, as the fit weighs it. A delay
+  // is linearised about the nominal (a sensor tau late reads
+  // -tau d(nominal)/dt more). Empty for the actee's law, which acts only
+  // in the contact and is judged there.
+  std::vector<double> weighed_column(EffectKind k) const;
+
   // Specimens that differ in stiffness (several nuts of one kind): replay i
   // alone, its actee's law times the factor that fits that trace best. The
   // law is the actee's own when `exponent` is 0, else the power law of that

@@ -36,6 +36,10 @@ struct Trace {
   std::string file;
   double turned = 0;  // rad, the tool turned about its hinge from how its file holds it (gravity turns with it)
   std::array<std::vector<double>, kSignals> column;
+  // SI, per signal: the deviation of the rounding its printed digits make
+  // (a cell's last digit's step over sqrt(12), RMS over the column): no
+  // noise estimate can be finer than what the file could hold.
+  std::array<double, kSignals> resolution{};
   const std::vector<double>& operator[](Signal s) const { return column[static_cast<size_t>(s)]; }
   std::vector<double>& operator[](Signal s) { return column[static_cast<size_t>(s)]; }
   bool has(Signal s) const { return !(*this)[s].empty(); }

@@ -15,12 +15,15 @@ constexpr double kReversalSpeed = 0.2;  // of the peak speed: a reversal lasts u
 constexpr double kLimitBand = 1e-3;      // rad: this near an angle limit counts as at it
 constexpr double kSignWidth = 1e-3;      // rad/s: friction's sign turns over this speed
 constexpr double kHeldBand = 0.1;        // friction's band below this share of a sample's noise does not matter
+constexpr double kUnresolved = 2;        // a window's misfit this many times its noise's: the motion is not resolved
+constexpr double kDropTime = 0.02;       // s: a crack drops the actee's force within this
 
 // x, its rate and acceleration, and their noise: white noise of deviation
 // s gives second differences of deviation s * sqrt(6), which a smooth
 // motion hardly adds to; their median absolute deviation (times 1.4826
-// for a normal law) is not moved by a few jumps.
-Derivatives differentiate(Replay& r) {
+// for a normal law) is not moved by a few jumps. No finer than the
+// printed `resolution` (rad or m), which a noise-free trace still has.
+Derivatives differentiate(Replay& r, double resolution) {
   Derivatives d = local_derivatives(r.t, r.x);
   std::vector<double> d2;
   for (size_t i = 0; i + 2 < r.x.size(); ++i) d2.push_back(std::abs(r.x[i] - 2 * r.x[i + 1] + r.x[i + 2]));
@@ -28,11 +31,68 @@ Derivatives differentiate(Replay& r) {
     std::nth_element(d2.begin(), d2.begin() + static_cast<long>(d2.size() / 2), d2.end());
     r.x_noise = 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
   }
+  r.x_noise = std::max(r.x_noise, resolution);
   r.rate_noise = r.x_noise * d.rate_noise_gain;
   r.accel_noise = r.x_noise * d.accel_noise_gain;
   r.rate = std::move(d.rate);
   r.accel = std::move(d.accel);
   return d;
+}
+
+// The samples whose window the polynomial cannot follow: it leaves more
+// than kUnresolved times what the noise alone would, in the angle (a
+// ringing, a snap) or in the measured effort (a ringing below the angle's
+// noise still moves the effort through the arm's inertia, A w^2 times
+// it), or the window reaches across the break (a kink no polynomial
+// follows). A noise's RMS over a window of some 50 samples is known to a
+// tenth.
+std::vector<bool> unresolved(const Derivatives& d, const Replay& r, const std::vector<double>& effort,
+                             double effort_noise, size_t break_at) {
+  const Derivatives e = local_derivatives(r.t, effort);
+  const double allowed = kUnresolved * r.x_noise * d.misfit_noise_gain;
+  const double allowed_effort = kUnresolved * effort_noise * e.misfit_noise_gain;
+  // A misfit marks its window's middle; what it cannot follow lies
+  // somewhere in the window, and a ringing's tail decays past it: the
+  // whole window is left out.
+  const size_t n = r.t.size(), m = d.half_width;
+  std::vector<bool> out(n, false);
+  for (size_t i = 0; i < n; ++i) {
+    const bool across_break = break_at != SIZE_MAX && i + m >= break_at && i <= break_at + m;
+    if (!across_break && d.misfit[i] <= allowed && e.misfit[i] <= allowed_effort) continue;
+    for (size_t j = i >= m ? i - m : 0; j <= std::min(n - 1, i + m); ++j) out[j] = true;
+  }
+  return out;
+}
+
+// Where the actee gave way in a trace without a `broken` column: its
+// measured force falls to a tenth of what it carried within kDropTime
+// while the model still squeezes it at more than half that deflection (a
+// release unloads it only as the jaws open). SIZE_MAX: nowhere.
+size_t measured_break(const Replay& r, const std::vector<double>& actee, double noise) {
+  double peak = 0, peak_deflection = 0;
+  size_t from = 0;  // the first sample within kDropTime of the one looked at
+  for (size_t i = 0; i < actee.size(); ++i) {
+    if (actee[i] > peak) {
+      peak = actee[i];
+      peak_deflection = r.deflection[i];
+    }
+    while (r.t[i] - r.t[from] > kDropTime) ++from;
+    if (peak < 10 * noise || actee[i] > 0.1 * peak + 3 * noise) continue;
+    if (r.deflection[i] <= 0.5 * peak_deflection) continue;
+    for (size_t j = from; j < i; ++j) {
+      if (actee[j] > 0.5 * peak) return i;
+    }
+  }
+  return SIZE_MAX;
+}
+
+// A signal's white noise, from its second differences (as above).
+double noise_of_signal(const std::vector<double>& y) {
+  std::vector<double> d2;
+  for (size_t i = 0; i + 2 < y.size(); ++i) d2.push_back(std::abs(y[i] - 2 * y[i + 1] + y[i + 2]));
+  if (d2.empty()) return 0;
+  std::nth_element(d2.begin(), d2.begin() + static_cast<long>(d2.size() / 2), d2.end());
+  return 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
 }
 
 // Phases from direction, contact and the limits; `limit` and `broken` say
@@ -41,8 +101,8 @@ Derivatives differentiate(Replay& r) {
 // extrapolated from one side, which misses a start's transient.
 // `friction`: the model's friction, in the main signal's unit (N*m about
 // the fulcrum; 0 for plates).
-void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vector<bool>& broken, size_t edge,
-                   double friction) {
+void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vector<bool>& broken,
+                   const std::vector<bool>& blurred, size_t edge, double friction) {
   // A lever closes as its angle falls; plates load as their displacement grows.
   const double closing = r.rig == Rig::lever ? -1.0 : 1.0;
   const size_t n = r.t.size();
@@ -92,12 +152,15 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
     const bool held = r.deflection[i] > 0 && friction < kHeldBand * std::abs(r.slope[i]) * r.x_noise;
     const bool moving = std::abs(r.rate[i]) > still && r.phase[i] != Phase::reversal;
     if (held && !moving) r.phase[i] = closing * r.rate[i] > 0 ? Phase::loading : Phase::unloading;
+    const bool in_motion = r.phase[i] != Phase::reversal && r.phase[i] != Phase::at_rest;
+    if (blurred[i] && in_motion) r.phase[i] = Phase::unresolved;
     if (at_limit[i]) r.phase[i] = Phase::at_limit;
     if (broken[i]) r.phase[i] = Phase::after_break;
-    // A limit's reaction, a broken actee, and friction at rest and while it
-    // turns over at a reversal are outside what the model predicts from
-    // the motion: reported, not fitted or scored.
-    r.fitted[i] = !at_limit[i] && !broken[i] && (moving || held) && i >= edge && i + edge < n;
+    // A limit's reaction, the snap as the actee breaks, motion the samples
+    // do not resolve, and friction at rest and while it turns over at a
+    // reversal are outside what the model predicts from the motion:
+    // reported, not fitted or scored.
+    r.fitted[i] = !at_limit[i] && !broken[i] && !blurred[i] && (moving || held) && i >= edge && i + edge < n;
   }
 }
 
@@ -145,8 +208,9 @@ void weigh(std::vector<Replay>& replays, double noise) {
 double smooth_sign(double rate) { return std::tanh(rate / kSignWidth); }
 
 const char* phase_name(Phase p) {
-  static const char* const kNames[] = {"free closing", "free opening", "reversals", "loading in contact",
-                                       "unloading in contact", "at rest", "at a limit", "after the break"};
+  static const char* const kNames[] = {"free closing", "free opening", "reversals",     "loading in contact",
+                                       "unloading in contact", "at rest", "at a limit", "the break's snap",
+                                       "unresolved motion"};
   return kNames[static_cast<int>(p)];
 }
 
@@ -164,28 +228,49 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
     r.turned = trace.turned;
     r.t = trace[Signal::t];
     r.x = trace[Signal::angle];
-    const Derivatives d = differentiate(r);
+    const Derivatives d = differentiate(r, trace.resolution[static_cast<size_t>(Signal::angle)]);
     r.to_newtons = 1 / b;
+    r.resolution = trace.resolution[static_cast<size_t>(Signal::effort_force)];
     const size_t n = r.t.size();
     r.measured.resize(n);
     r.nominal.resize(n);
     r.deflection.resize(n);
     r.slope.resize(n);
     r.weight.assign(n, 1.0);  // until weigh() knows the effort's noise
-    std::vector<bool> at_limit(n), broken(n);
     const bool measured_actee = trace.has(Signal::actee_force) && actee;
-    bool model_broke = false;
+    // The jaws' squeeze of the actee by the model, then where it gave way:
+    // the `broken` column, else its measured force dropping while the model
+    // still squeezes it, else where the model's force passes its limit.
+    for (size_t i = 0; i < n; ++i) r.deflection[i] = actee ? std::max(0.0, a * (state->contact_angle - r.x[i])) : 0.0;
+    if (trace.has(Signal::broken)) {
+      const std::vector<double>& broken = trace[Signal::broken];
+      r.break_at = static_cast<size_t>(std::find_if(broken.begin(), broken.end(), [](double v) { return v > 0.5; }) -
+                                       broken.begin());
+    } else if (measured_actee) {
+      const std::vector<double>& force = trace[Signal::actee_force];
+      r.break_at = measured_break(r, force, noise_of_signal(force));
+    } else if (actee && model.actee_breaks) {
+      double slope = 0;
+      for (size_t i = 0; i < n && r.break_at == SIZE_MAX; ++i) {
+        if (actee_force_law(model, r.deflection[i], state->actee_thickness, &slope) > model.actee_limit) r.break_at = i;
+      }
+    }
+    if (r.break_at >= n) r.break_at = SIZE_MAX;
+    std::vector<bool> at_limit(n);
     for (size_t i = 0; i < n; ++i) {
       const double theta = r.x[i], omega = r.rate[i], alpha = r.accel[i];
       r.measured[i] = trace[Signal::effort_force][i] * b;
       const SpringTorques spring = spring_torques(model, theta);
-      const double deflection = actee ? std::max(0.0, a * (state->contact_angle - theta)) : 0.0;
+      // After the break the tool is a tool without an actee.
+      const bool whole = actee && i < r.break_at;
+      if (!whole) r.deflection[i] = 0;
+      const double deflection = r.deflection[i];
       double slope = 0;
       const double actee_force = actee_force_law(model, deflection, state->actee_thickness, &slope);
       // Within three of the angle's noise of the actee, that noise may put
       // the jaws on it: the prediction then follows the actee's stiffness,
       // as far as the noise could press it.
-      if (actee && deflection == 0) {
+      if (whole && deflection == 0) {
         const double reach = a * (state->contact_angle - theta + 3 * r.x_noise);
         if (reach > 0) actee_force_law(model, reach, state->actee_thickness, &slope);
       }
@@ -195,26 +280,34 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       r.nominal[i] = spring.linear + spring.preload + spring.progressive + actee_force * a + friction -
                      model.damping * omega - model.arm_inertia * alpha + g_cos * std::cos(theta) +
                      g_sin * std::sin(theta);
-      r.deflection[i] = deflection;
       // The actee's torque F(a (theta_c - theta)) a turns by -F' a^2 per radian.
       r.slope[i] = spring.slope - slope * a * a - g_cos * std::sin(theta) + g_sin * std::cos(theta);
       at_limit[i] = theta <= model.theta_min + kLimitBand || theta >= model.theta_max - kLimitBand;
-      if (trace.has(Signal::broken)) {
-        broken[i] = trace[Signal::broken][i] > 0.5;
-      } else {
-        model_broke = model_broke || (model.actee_breaks && actee_force > model.actee_limit);
-        broken[i] = model_broke;
-      }
       if (measured_actee) {
         r.actee_measured.push_back(trace[Signal::actee_force][i]);
-        r.actee_nominal.push_back(broken[i] ? 0.0 : actee_force);
+        r.actee_nominal.push_back(actee_force);
       }
     }
     if (model.sensor_latency > 0) {  // the sensor reports the effort of `delay` ago
       r.nominal = delayed(r.t, r.nominal, model.sensor_latency);
     }
+    const std::vector<double>& effort = trace[Signal::effort_force];
+    const double effort_noise = std::max(noise_of_signal(effort), r.resolution);
+    const std::vector<bool> blurred = unresolved(d, r, effort, effort_noise, r.break_at);
+    // The snap as the actee gives way lasts until the polynomial follows
+    // the motion again over a whole window (and a late sensor has caught up).
+    std::vector<bool> snap(n, false);
+    if (r.break_at != SIZE_MAX) {
+      const size_t window = 2 * d.half_width + 1;
+      size_t calm = 0;  // resolved samples in a row
+      for (size_t i = r.break_at; i < n; ++i) {
+        calm = blurred[i] ? 0 : calm + 1;
+        if (calm >= window && r.t[i] - r.t[r.break_at] >= model.sensor_latency) break;
+        snap[i] = true;
+      }
+    }
     // Within the fit's half-width of either end the rates are one-sided.
-    assign_phases(r, at_limit, broken, d.half_width, model.friction_torque);
+    assign_phases(r, at_limit, snap, blurred, d.half_width, model.friction_torque);
     out.push_back(std::move(r));
   }
   return out;
@@ -229,7 +322,8 @@ std::vector<Replay> replay_plates(const Model& model, const Measurement& m) {
     r.rig = Rig::plates;
     r.t = trace[Signal::t];
     r.x = trace[Signal::displacement];
-    const Derivatives d = differentiate(r);
+    const Derivatives d = differentiate(r, trace.resolution[static_cast<size_t>(Signal::displacement)]);
+    r.resolution = trace.resolution[static_cast<size_t>(Signal::force)];
     const size_t n = r.t.size();
     r.measured = trace[Signal::force];
     r.nominal.resize(n);
@@ -254,7 +348,9 @@ std::vector<Replay> replay_plates(const Model& model, const Measurement& m) {
       r.slope[i] = slope;
       broken[i] = i >= rupture;
     }
-    assign_phases(r, at_limit, broken, 0, 0.0);  // the plates' law needs no rates, and has no friction
+    r.break_at = rupture < n ? rupture : SIZE_MAX;
+    // The plates' law needs no rates (none is unresolved), and has no friction.
+    assign_phases(r, at_limit, broken, std::vector<bool>(n, false), 0, 0.0);
     out.push_back(std::move(r));
   }
   return out;

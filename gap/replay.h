@@ -4,6 +4,7 @@
 // torque (or force) along the same samples: its regressor.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,12 @@
 namespace afford {
 
 // Where a sample lies, from the model's own state along the trace.
-enum class Phase { free_closing, free_opening, reversal, loading, unloading, at_rest, at_limit, after_break };
-inline constexpr int kPhases = 8;
+// `unresolved`: motion faster than the samples resolve (a ringing, a snap,
+// a derivative window across the break), where the rates are not the
+// motion's. `after_break` is the snap as the actee gives way, until the
+// motion settles; after it the tool is replayed as a tool without an actee.
+enum class Phase { free_closing, free_opening, reversal, loading, unloading, at_rest, at_limit, after_break, unresolved };
+inline constexpr int kPhases = 9;
 const char* phase_name(Phase p);
 
 // One trace replayed. For a lever the main signal is the torque about the
@@ -30,7 +35,7 @@ struct Replay {
   std::vector<double> deflection;  // m, the actee's, from the model (0 without contact)
   std::vector<double> actee_measured, actee_nominal;  // N, lever with an actee_force column; else empty
   std::vector<Phase> phase;
-  std::vector<bool> fitted;      // used in fits and scores: not at a limit, not after a break
+  std::vector<bool> fitted;      // used in fits and scores: not at a limit, not in the break's snap, resolved
   // d nominal / d x at each sample (N*m/rad or N/m): how much of the
   // motion sensor's noise the prediction takes on there (a stiff actee's
   // contact passes it on many times over).
@@ -42,6 +47,10 @@ struct Replay {
   // The motion sensor's noise (deviation, from x's second differences) and
   // what the differentiation makes of it in the rate and the acceleration.
   double x_noise = 0, rate_noise = 0, accel_noise = 0;
+  // The main signal's printed resolution (trace.h's, in N at the effort):
+  // the least noise a measurement can have.
+  double resolution = 0;
+  size_t break_at = SIZE_MAX;    // the sample at which the actee gave way (SIZE_MAX: it did not)
   Rig rig = Rig::lever;
   double to_newtons = 1;         // 1 / lever arm (lever) or 1: main signal to N at the effort
 };

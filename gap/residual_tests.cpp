@@ -8,6 +8,7 @@ namespace afford {
 namespace {
 
 constexpr int kLags = 20;        // Ljung-Box
+constexpr int kMemory = 80;      // lags over which a coloured noise's autocovariance is summed (Bartlett)
 constexpr size_t kBatches = 40;  // batch means for the paired test's standard error
 
 // 99 % point of chi-square with k degrees of freedom (Wilson-Hilferty).
@@ -36,8 +37,8 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
 // Autocovariances at lags 0 to kLags within each trace's fitted stretches,
 // pooled, each trace's mean removed; `n` the samples.
 std::vector<double> autocovariance(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& series,
-                                   const std::vector<size_t>& which, size_t* n) {
-  std::vector<double> ck(kLags + 1, 0.0);
+                                   const std::vector<size_t>& which, size_t* n, int lags = kLags) {
+  std::vector<double> ck(static_cast<size_t>(lags) + 1, 0.0);
   *n = 0;
   for (size_t i : which) {
     const Replay& r = replays[i];
@@ -55,7 +56,7 @@ std::vector<double> autocovariance(const std::vector<Replay>& replays, const std
     *n += m;
     for (size_t s = 0; s < e.size(); ++s) {
       if (!r.fitted[s]) continue;
-      for (int k = 0; k <= kLags && s + static_cast<size_t>(k) < e.size(); ++k) {
+      for (int k = 0; k <= lags && s + static_cast<size_t>(k) < e.size(); ++k) {
         if (r.fitted[s + static_cast<size_t>(k)]) ck[static_cast<size_t>(k)] += (e[s] - mean) * (e[s + static_cast<size_t>(k)] - mean);
       }
     }
@@ -98,25 +99,62 @@ void what_it_follows(const std::vector<Replay>& replays, const std::vector<std::
 ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& residual,
                        const std::vector<size_t>& which, const std::vector<std::vector<double>>* noise) {
   size_t n = 0, n_noise = 0;  // the noise's count is the residual's: the same samples
-  const std::vector<double> ck = autocovariance(replays, residual, which, &n);
+  const std::vector<double> ck = autocovariance(replays, residual, which, &n, kMemory);
   // The angle's noise through the model is not white (the rates are
   // polynomial fits over a window): its own autocovariance, from the same
   // noise replayed again, is what noise alone would show.
-  const std::vector<double> expected =
-      noise != nullptr ? autocovariance(replays, *noise, which, &n_noise) : std::vector<double>(kLags + 1, 0.0);
+  const std::vector<double> expected = noise != nullptr ? autocovariance(replays, *noise, which, &n_noise, kMemory)
+                                                        : std::vector<double>(kMemory + 1, 0.0);
   ResidualTest t;
   t.threshold = chi2_99(kLags);
   const double c0 = ck[0];
-  if (n <= static_cast<size_t>(kLags) || c0 <= 0) {
+  if (n <= static_cast<size_t>(kMemory) || c0 <= 0) {
     t.white = true;
     return t;
   }
+  // Per sample: the residual's autocovariance, and under the hypothesis
+  // that it is noise, the noise's (the sensor's white share at lag 0,
+  // the motion's coloured share through the model at every lag).
   const double nn = static_cast<double>(n);
-  for (int k = 1; k <= kLags; ++k) {
-    const double rho = (ck[static_cast<size_t>(k)] - expected[static_cast<size_t>(k)]) / c0;
-    t.q += rho * rho / (nn - k);
+  std::vector<double> gamma(kMemory + 1), null(kMemory + 1), colour(kMemory + 1);
+  for (size_t k = 0; k <= kMemory; ++k) {
+    gamma[k] = ck[k] / nn;
+    colour[k] = expected[k] / nn;
   }
-  t.q *= nn * (nn + 2);
+  // The colour's shape is the model's (a polynomial's window through its
+  // inertia), its size the noise's through the inertia the data has,
+  // which a fit may have changed: it is scaled to the residual's own,
+  // least squares over the lags. How large the residual may be is the
+  // noise floor's question, not this test's.
+  double cross = 0, own = 0;
+  for (size_t k = 1; k <= kMemory; ++k) {
+    cross += gamma[k] * colour[k];
+    own += colour[k] * colour[k];
+  }
+  const double scale = own > 0 ? std::max(0.0, cross / own) : 0.0;
+  for (size_t k = 0; k <= kMemory; ++k) {
+    colour[k] *= scale;
+    null[k] = k == 0 ? gamma[0] : colour[k];
+  }
+  // Bartlett's variance of a sample autocovariance at lag k, of a series
+  // of autocovariance g: (1/N) sum over j of g(j)^2 + g(j+k) g(j-k). A
+  // coloured noise's lags scatter far more than a white one's 1/N: a
+  // Ljung-Box statistic of the plain autocorrelations would call it
+  // structure. The estimate of the colour taken off scatters as much again.
+  auto at = [](const std::vector<double>& g, long j) {
+    const auto a = static_cast<size_t>(std::abs(j));
+    return a < g.size() ? g[a] : 0.0;
+  };
+  auto bartlett = [&](const std::vector<double>& g, long k) {
+    double v = 0;
+    for (long j = -kMemory; j <= kMemory; ++j) v += at(g, j) * at(g, j) + at(g, j + k) * at(g, j - k);
+    return v / nn;
+  };
+  for (long k = 1; k <= kLags; ++k) {
+    const double variance = bartlett(null, k) + (noise != nullptr ? bartlett(colour, k) : 0.0);
+    const double d = gamma[static_cast<size_t>(k)] - colour[static_cast<size_t>(k)];
+    if (variance > 0) t.q += d * d / variance;
+  }
   t.white = t.q <= t.threshold;
   return t;
 }

@@ -1,7 +1,10 @@
 #include "trace_table.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <string_view>
 
@@ -60,6 +63,43 @@ std::string shown(std::string_view s) {
   constexpr size_t kShown = 40;
   if (s.size() <= kShown) return "'" + std::string(s) + "'";
   return "'" + std::string(s.substr(0, kShown)) + "...' (" + std::to_string(s.size()) + " characters)";
+}
+
+// How a column's numbers were printed: for each pair (the exponent of a
+// cell's last printed digit, of its leading digit), how many cells. Zero
+// cells count for nothing: a zero is most likely exact.
+using PrintedDigits = std::map<std::pair<int, int>, size_t>;
+
+void note_printed(std::string_view text, double value, PrintedDigits* digits) {
+  if (value == 0 || !std::isfinite(value)) return;
+  const size_t e = text.find_first_of("eE");
+  const std::string_view mantissa = text.substr(0, e);
+  const size_t dot = mantissa.find('.');
+  const long decimals = dot == std::string_view::npos ? 0 : static_cast<long>(mantissa.size() - dot - 1);
+  long exponent = 0;  // clamped: "1e999999999999" is read elsewhere as too large
+  if (e != std::string_view::npos) {
+    exponent = std::clamp(std::strtol(std::string(text.substr(e + 1)).c_str(), nullptr, 10), -400L, 400L);
+  }
+  const auto last = static_cast<int>(std::clamp(exponent - decimals, -800L, 800L));
+  const int leading = static_cast<int>(std::floor(std::log10(std::abs(value))));
+  ++(*digits)[{last, leading}];
+}
+
+// The deviation of the rounding the printed digits make: each cell's last
+// digit's step over sqrt(12), RMS. Where a writer dropped trailing zeros
+// ("%g" prints 0.0008 for 0.000800000), a cell's step is that of the most
+// significant digits any cell of the column shows.
+double printed_resolution(const PrintedDigits& digits) {
+  int significant = 0;
+  for (const auto& [key, count] : digits) significant = std::max(significant, key.second - key.first + 1);
+  double squares = 0;
+  size_t cells = 0;
+  for (const auto& [key, count] : digits) {
+    const double step = std::pow(10.0, std::min(key.first, key.second - significant + 1));
+    squares += step * step * static_cast<double>(count);
+    cells += count;
+  }
+  return cells > 0 ? std::sqrt(squares / static_cast<double>(cells) / 12) : 0.0;
 }
 
 }  // namespace
@@ -130,6 +170,7 @@ Trace parse_trace(const std::string& text, const std::string& path, const TableF
 
   Trace trace;
   trace.file = path;
+  std::array<PrintedDigits, kSignals> digits;
   int last_row = header_row;
   for (size_t l = skip + 1; l < table_end; ++l) {
     const std::string& line = lines[l];
@@ -149,6 +190,7 @@ Trace parse_trace(const std::string& text, const std::string& path, const TableF
       const std::optional<double> v = parse_number(f.text);
       if (!v) fail(SourceLoc{path, row, f.column}, "a number", shown(f.text));
       trace[static_cast<Signal>(s)].push_back(*v * format.scale[static_cast<size_t>(s)]);
+      note_printed(f.text, *v, &digits[static_cast<size_t>(s)]);
     }
     const std::vector<double>& t = trace[Signal::t];
     if (t.size() >= 2 && !(t.back() > t[t.size() - 2])) {
@@ -157,6 +199,7 @@ Trace parse_trace(const std::string& text, const std::string& path, const TableF
            format_quantity(t.back(), dim::time));
     }
   }
+  for (size_t s = 0; s < kSignals; ++s) trace.resolution[s] = printed_resolution(digits[s]) * format.scale[s];
   if (trace.size() < min_rows) {
     fail(SourceLoc{path, last_row, 1},
          "a trace of at least " + std::to_string(min_rows) + " rows (to fit on part and judge on the rest)",

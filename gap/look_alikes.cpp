@@ -1,0 +1,73 @@
+#include "look_alikes.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+namespace afford {
+namespace {
+
+// Columns this close to parallel leave the data nothing to choose by: the
+// other's best fit misses by under 1 - 0.995^2, a hundredth, of the
+// chosen effect's own share (gravity against a preload over 8 to 28 deg
+// one way up is 0.99995; friction against damping on a sine 0.90).
+constexpr double kLookAlike = 0.995;
+
+// What tells two effects apart, as an experimenter would measure it.
+std::string separating(EffectKind a, EffectKind b) {
+  auto is = [&](EffectKind x, EffectKind y) { return (a == x && b == y) || (a == y && b == x); };
+  if (is(EffectKind::pivot_friction, EffectKind::spring_preload) || is(EffectKind::pivot_friction, EffectKind::gravity)) {
+    return "open and close (friction turns with the motion; a preload or a weight does not)";
+  }
+  if (is(EffectKind::gravity, EffectKind::spring_preload)) {
+    return "turn the tool (its weight turns with it; a preload does not)";
+  }
+  if (is(EffectKind::viscous_damping, EffectKind::sensor_latency)) {
+    return "a drive where the effort changes other than with the speed (a second speed with an arm whose inertia "
+           "shows, or the slope of an actee's contact): with a linear spring alone a late sensor reads as damping";
+  }
+  if (is(EffectKind::arm_inertia, EffectKind::sensor_latency)) return "a second speed or a drive with other corners";
+  return "a drive that moves them differently (other angles, speeds or orientations)";
+}
+
+// `v` with the span of `basis`'s columns taken out (least squares).
+Eigen::VectorXd without(const Eigen::VectorXd& v, const Eigen::MatrixXd& basis) {
+  if (basis.cols() == 0) return v;
+  return v - basis * basis.colPivHouseholderQr().solve(v);
+}
+
+}  // namespace
+
+std::vector<LookAlike> look_alikes(const Fitter& fitter, const std::vector<EffectKind>& chosen,
+                                   const std::vector<EffectKind>& library) {
+  std::vector<LookAlike> out;
+  auto column = [&](EffectKind k) {
+    const std::vector<double> c = fitter.weighed_column(k);
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(c.data(), static_cast<long>(c.size())));
+  };
+  for (EffectKind k : chosen) {
+    const Eigen::VectorXd own = column(k);
+    if (own.size() == 0) continue;
+    Eigen::MatrixXd others(own.size(), 0);
+    for (EffectKind o : chosen) {
+      if (o == k) continue;
+      const Eigen::VectorXd c = column(o);
+      if (c.size() != own.size()) continue;
+      others.conservativeResize(Eigen::NoChange, others.cols() + 1);
+      others.col(others.cols() - 1) = c;
+    }
+    const Eigen::VectorXd a = without(own, others);
+    for (EffectKind j : library) {
+      if (std::find(chosen.begin(), chosen.end(), j) != chosen.end()) continue;
+      const Eigen::VectorXd c = column(j);
+      if (c.size() != own.size()) continue;
+      const Eigen::VectorXd b = without(c, others);
+      const double norms = a.norm() * b.norm();
+      const double cosine = norms > 0 ? std::abs(a.dot(b)) / norms : 0.0;
+      if (cosine >= kLookAlike) out.push_back({k, j, cosine, separating(k, j)});
+    }
+  }
+  return out;
+}
+
+}  // namespace afford

@@ -1,0 +1,29 @@
+// Before an effect is named: can the fitted samples tell it from the
+// other candidates at all? Two effects whose columns (as the fit weighs
+// them, with the other named effects' taken out) are all but parallel fit
+// any data equally well: closing-only strokes make friction a constant
+// torque, as a preload is; one orientation makes the arm's weight all but
+// one; one sine at one speed makes a late sensor read as damping.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fit.h"
+
+namespace afford {
+
+struct LookAlike {
+  EffectKind chosen = EffectKind::pivot_friction;  // named by the selection
+  EffectKind alike = EffectKind::pivot_friction;   // a candidate the data cannot tell from it
+  double cosine = 0;                               // of their columns, 0..1
+  std::string separate;                            // the measurement that would tell them apart
+};
+
+// Every candidate of `library` outside `chosen` whose column, and the
+// chosen one's, the other chosen effects leave at a cosine of at least
+// kLookAlike (look_alikes.cpp).
+std::vector<LookAlike> look_alikes(const Fitter& fitter, const std::vector<EffectKind>& chosen,
+                                   const std::vector<EffectKind>& library);
+
+}  // namespace afford
