@@ -74,7 +74,8 @@ int gap(const GapOptions& o) {
     return 0;
   }
   const Diagnosis d = diagnose(m, options);
-  std::cout << (o.json ? report_json(d) + "\n" : report_text(d));
+  const Model nominal = nominal_model(m);  // each fitted parameter is reported as a change over it and as the total
+  std::cout << (o.json ? report_json(d, &nominal) + "\n" : report_text(d, &nominal));
   if (!o.out_dir.empty()) {
     for (const std::string& written : write_gap_plots(d, o.out_dir)) std::cerr << "wrote " << written << "\n";
   }

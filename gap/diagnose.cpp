@@ -212,6 +212,13 @@ Model compile_with(const Measurement& m, const std::vector<EffectFit>& effects) 
     spec.kind = e.kind;
     spec.name = manifest_of(e.kind).name;
     spec.param = e.value;
+    // A fitted delay is searched on top of the measurement's own (the
+    // replay has delayed the nominal by it already): the sensor's is both.
+    if (e.kind == EffectKind::sensor_latency) {
+      for (const EffectSpec& own : m.options.effects) {
+        if (own.kind == EffectKind::sensor_latency && own.enabled) spec.param[0] += own.param[0];
+      }
+    }
     with.options.effects.push_back(spec);
   }
   return m.rig == Rig::lever ? compile_measurement(with) : compile_actee_only(*with.actee, with.options);
@@ -354,11 +361,19 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   const std::vector<std::vector<double>> noise_before = noise_through(fitter, noisier_fitter, replays, noisier, nominal);
   const bool nominal_matched =
       within(nominal_scored, 1.0) || (nominal_within && whiteness(replays, before, all, &noise_before).white);
-  // Effects added match once within the tolerance, where the nominal model
-  // was not. Where it was, the gap is its structure, and what explains it
-  // leaves a white residual: a look-alike that trims it to the floor and
-  // leaves its shape has explained nothing.
-  auto effects_match = [&](const Scored& f) { return !nominal_within && matched(f); };
+  // Effects added match once at the floor, or within the tolerance with
+  // a white residual, where the nominal model was not. Where it was, the
+  // gap is its structure, and what explains it leaves a white residual: a
+  // look-alike that trims a gap to the floor and leaves its shape (a
+  // weight's cosine standing in for a force sensor's gain) has explained
+  // nothing.
+  auto white_under = [&](const SetFit& f) {
+    const std::vector<std::vector<double>> noise = noise_through(fitter, noisier_fitter, replays, noisier, f);
+    return whiteness(replays, weighed_residual(f), all, &noise).white;
+  };
+  auto effects_match = [&](const Scored& f) {
+    return !nominal_within && (within(f, 1.0) || (matched(f) && white_under(f.fit)));
+  };
   Scored current_scored = nominal_scored;
   const SetFit& current = current_scored.fit;
   std::vector<EffectKind> chosen;

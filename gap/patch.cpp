@@ -14,22 +14,28 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A fitted parameter as a file writes it: the total, the nominal's value
+// and the fitted change together (the file replaces the nominal's value).
+std::string total(const EffectFit& e, size_t i, const Model& nominal) {
+  return si_quantity(parameter_change(e, i, nominal).total, manifest_of(e.kind).params[i]);
+}
+
 // The file as YAML with the effects of `home` among `fits` switched on.
-YAML::Node patched(const std::string& file, const std::vector<EffectFit>& fits, EffectHome home) {
+YAML::Node patched(const std::string& file, const std::vector<EffectFit>& fits, EffectHome home, const Model& nominal) {
   YAML::Node root = YAML::LoadFile(file);
   for (const EffectFit& e : fits) {
     const EffectManifest& m = manifest_of(e.kind);
     if (m.home != home) continue;
     YAML::Node effect;
-    for (size_t i = 0; i < m.params.size(); ++i) effect[m.params[i].key] = si_quantity(e.value[i], m.params[i]);
+    for (size_t i = 0; i < m.params.size(); ++i) effect[m.params[i].key] = total(e, i, nominal);
     // The spring section's preload is this effect's parameter: given once.
     if (e.kind == EffectKind::spring_preload && root["spring"] && root["spring"]["preload"]) {
-      root["spring"]["preload"] = si_quantity(e.value[0], m.params[0]);
+      root["spring"]["preload"] = total(e, 0, nominal);
       continue;
     }
     if (e.kind == EffectKind::spring_preload && root["spring"] && root["spring"]["rest_length"]) {
       root["spring"].remove("rest_length");
-      root["spring"]["preload"] = si_quantity(e.value[0], m.params[0]);
+      root["spring"]["preload"] = total(e, 0, nominal);
       continue;
     }
     root["effects"][m.name] = effect;
@@ -41,7 +47,9 @@ std::string write(const fs::path& path, const YAML::Node& root, const std::strin
   YAML::Emitter out;
   out << root;
   std::ofstream file(path);
-  file << "# Written by afford gap from " << from << ": the fitted effects switched on.\n" << out.c_str() << "\n";
+  file << "# Written by afford gap from " << from
+       << ": the fitted effects switched on, each parameter its total (the nominal's value plus the fitted change).\n"
+       << out.c_str() << "\n";
   file.close();
   if (!file) throw std::runtime_error("cannot write " + path.string());
   return path.string();
@@ -59,6 +67,7 @@ bool any_in(const std::vector<EffectFit>& fits, EffectHome home) {
 std::vector<std::string> write_patch(const Measurement& m, const Diagnosis& d, const std::string& dir) {
   fs::create_directories(dir);
   std::vector<std::string> written;
+  const Model nominal = nominal_model(m);
   YAML::Node measurement = YAML::LoadFile(m.file);
   const fs::path here = fs::absolute(m.file).parent_path();
   auto own_file = [&](const std::string& file, const char* what) {
@@ -70,7 +79,7 @@ std::vector<std::string> write_patch(const Measurement& m, const Diagnosis& d, c
   if (m.object) {
     own_file(m.object->file, "object");
     if (any_in(d.effects, EffectHome::object)) {
-      written.push_back(write(fs::path(dir) / "object.yaml", patched(m.object->file, d.effects, EffectHome::object), m.object->file));
+      written.push_back(write(fs::path(dir) / "object.yaml", patched(m.object->file, d.effects, EffectHome::object, nominal), m.object->file));
       measurement["object"] = "object.yaml";
     } else {
       measurement["object"] = fs::absolute(m.object->file).string();
@@ -80,7 +89,7 @@ std::vector<std::string> write_patch(const Measurement& m, const Diagnosis& d, c
     own_file(m.actee->file, "actee");
     std::string actee_path = fs::absolute(m.actee->file).string();
     if (any_in(d.effects, EffectHome::actee)) {
-      written.push_back(write(fs::path(dir) / "actee.yaml", patched(m.actee->file, d.effects, EffectHome::actee), m.actee->file));
+      written.push_back(write(fs::path(dir) / "actee.yaml", patched(m.actee->file, d.effects, EffectHome::actee, nominal), m.actee->file));
       actee_path = "actee.yaml";
     }
     measurement["actee"]["file"] = actee_path;
@@ -100,7 +109,7 @@ std::vector<std::string> write_patch(const Measurement& m, const Diagnosis& d, c
   for (const EffectFit& e : d.effects) {
     const EffectManifest& mf = manifest_of(e.kind);
     if (mf.home != EffectHome::measurement) continue;
-    for (size_t i = 0; i < mf.params.size(); ++i) measurement["effects"][mf.name][mf.params[i].key] = si_quantity(e.value[i], mf.params[i]);
+    for (size_t i = 0; i < mf.params.size(); ++i) measurement["effects"][mf.name][mf.params[i].key] = total(e, i, nominal);
   }
   written.push_back(write(fs::path(dir) / "measurement.yaml", measurement, m.file));
   return written;

@@ -11,7 +11,9 @@ namespace afford {
 
 // Writes into `dir` (created if needed) object.yaml and actee.yaml where
 // the diagnosis changed them, and measurement.yaml naming them and the
-// original traces; returns the files written. A DataError if the tool or
+// original traces; returns the files written. Each parameter is written as
+// its total, the nominal's value and the fitted change together (the
+// report gives both, report.h). A DataError if the tool or
 // actee is written inside the measurement rather than in a file of its own.
 std::vector<std::string> write_patch(const Measurement& m, const Diagnosis& d, const std::string& dir);
 

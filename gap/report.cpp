@@ -35,7 +35,38 @@ std::string si_quantity(double si, const EffectParam& p) {
   return p.dimension == dim::none ? std::string(buf) : std::string(buf) + " " + si_unit(p);
 }
 
-std::string report_text(const Diagnosis& d) {
+Model nominal_model(const Measurement& m) {
+  return m.rig == Rig::lever ? compile_measurement(m) : compile_actee_only(*m.actee, m.options);
+}
+
+ParameterChange parameter_change(const EffectFit& fit, size_t i, const Model& nominal) {
+  ParameterChange c;
+  switch (fit.kind) {
+    case EffectKind::pivot_friction: c.nominal = nominal.friction_torque; break;
+    case EffectKind::viscous_damping: c.nominal = nominal.damping; break;
+    case EffectKind::spring_preload: c.nominal = nominal.spring_preload; break;
+    case EffectKind::progressive_spring: c.nominal = nominal.spring_cubic; break;
+    case EffectKind::arm_inertia: c.nominal = nominal.arm_inertia; break;
+    case EffectKind::gravity: c.nominal = nominal.gravity_extra; break;
+    case EffectKind::actee_compliance:  // the fitted law replaces the actee's own: linear unless its file has one
+      c.nominal = i == 0 ? nominal.actee_exponent : nominal.actee_reference;
+      c.has_nominal = i == 0 || nominal.actee_reference > 0;
+      break;
+    case EffectKind::sensor_latency:
+      // The fit searches the delay on top of the measurement's own (the
+      // replay has delayed the nominal already): its value is the change.
+      c.nominal = nominal.sensor_latency;
+      c.change = fit.value[i];
+      c.total = c.nominal + c.change;
+      return c;
+  }
+  // Every other value is the total, the nominal included (fit.h).
+  c.total = fit.value[i];
+  c.change = c.has_nominal ? c.total - c.nominal : 0;
+  return c;
+}
+
+std::string report_text(const Diagnosis& d, const Model* nominal) {
   std::string out = "measurement " + d.measurement + ": verdict " + verdict_name(d.verdict) + "\n";
   char line[512];
   auto shrink_of = [](double before, double after) { return before > 0 ? 100 * (1 - after / before) : 0.0; };
@@ -54,7 +85,11 @@ std::string report_text(const Diagnosis& d) {
   std::snprintf(line, sizeof line, "shrink: %.0f %%, %s, where the gap is the largest against the noise\n",
                 100 * d.shrink, d.shrink_in_contact ? "in the actee's contact" : "over every sample");
   out += line;
-  std::snprintf(line, sizeof line, "judged by cross-validation over %zu folds of %zu traces\n", d.folds, d.judged_on.size());
+  std::snprintf(line, sizeof line, "judged by cross-validation over %zu folds of %zu blocks of %zu traces (fitted samples:",
+                d.folds, d.judged_on.size(), d.traces);
+  out += line;
+  for (const FoldSize& f : d.fold_sizes) out += " " + std::to_string(f.fitted);
+  std::snprintf(line, sizeof line, ")\n");
   out += line;
   if (!d.where.empty()) out += "where: " + d.where + "\n";
   for (const PhaseShare& p : d.phases) {
@@ -63,11 +98,27 @@ std::string report_text(const Diagnosis& d) {
     out += line;
   }
   if (!d.effects.empty()) out += d.verdict == Verdict::unexplained ? "effects fitted (not enough):\n" : "effects:\n";
+  // Each parameter as its change over the nominal model's, the nominal and
+  // the total: "torque +0.3 +- 0.002 N*m over the nominal 0.01 (0.31 in all)".
   for (const EffectFit& e : d.effects) {
     const EffectManifest& m = manifest_of(e.kind);
     out += "  " + std::string(m.name) + ":";
     for (size_t i = 0; i < m.params.size(); ++i) {
-      std::snprintf(line, sizeof line, " %s %.4g +- %.2g %s", m.params[i].key, e.value[i], e.sigma[i], si_unit(m.params[i]).c_str());
+      const std::string unit = m.params[i].dimension == dim::none ? "" : " " + si_unit(m.params[i]);
+      out += i > 0 ? ", " : " ";
+      if (nominal == nullptr) {
+        std::snprintf(line, sizeof line, "%s %.4g +- %.2g%s in all (the nominal not given)", m.params[i].key, e.value[i],
+                      e.sigma[i], unit.c_str());
+      } else {
+        const ParameterChange c = parameter_change(e, i, *nominal);
+        if (c.has_nominal) {
+          std::snprintf(line, sizeof line, "%s %+.4g +- %.2g%s over the nominal %.4g (%.4g in all)", m.params[i].key,
+                        c.change, e.sigma[i], unit.c_str(), c.nominal, c.total);
+        } else {
+          std::snprintf(line, sizeof line, "%s %.4g +- %.2g%s (the nominal has none)", m.params[i].key, c.total,
+                        e.sigma[i], unit.c_str());
+        }
+      }
       out += line;
     }
     out += "\n";
@@ -76,6 +127,11 @@ std::string report_text(const Diagnosis& d) {
     std::string s;
     for (EffectKind k : set) s += (s.empty() ? "" : " + ") + std::string(manifest_of(k).name);
     out += "  as good: " + s + "\n";
+  }
+  for (const LookAlike& l : d.look_alikes) {
+    std::snprintf(line, sizeof line, "  the data cannot tell %s from %s (cosine %.4f); to tell them apart: ",
+                  manifest_of(l.chosen).name, manifest_of(l.alike).name, l.cosine);
+    out += line + l.separate + "\n";
   }
   std::snprintf(line, sizeof line, "residual: %s (Ljung-Box Q = %.1f, white below %.1f); it follows %s (correlation %.2f)\n",
                 d.residual.white ? "white" : "structured", d.residual.q, d.residual.threshold, d.residual.follows.c_str(),
@@ -140,7 +196,7 @@ std::string report_text(const Diagnosis& d) {
   return out;
 }
 
-std::string report_json(const Diagnosis& d) {
+std::string report_json(const Diagnosis& d, const Model* nominal) {
   using Json = nlohmann::ordered_json;
   // Six significant digits, as the text report, whole numbers as integers;
   // non-finite and "never" (< 0) are null.
@@ -158,8 +214,21 @@ std::string report_json(const Diagnosis& d) {
   for (const EffectFit& fit : d.effects) {
     const EffectManifest& m = manifest_of(fit.kind);
     Json parameters = Json::object();
+    // value: the total (as before); change over the nominal, and the
+    // nominal (null where not given or where the nominal has none).
     for (size_t i = 0; i < m.params.size(); ++i) {
-      parameters[m.params[i].key] = {{"value", num(fit.value[i])},
+      Json total = num(fit.value[i]), change = nullptr, base = nullptr;
+      if (nominal != nullptr) {
+        const ParameterChange c = parameter_change(fit, i, *nominal);
+        total = num(c.total);
+        if (c.has_nominal) {
+          change = num(c.change);
+          base = num(c.nominal);
+        }
+      }
+      parameters[m.params[i].key] = {{"value", total},
+                                     {"change", change},
+                                     {"nominal", base},
                                      {"unit", m.params[i].dimension == dim::none ? "" : si_unit(m.params[i])},
                                      {"uncertainty", num(fit.sigma[i])}};
     }
@@ -170,6 +239,13 @@ std::string report_json(const Diagnosis& d) {
     Json names = Json::array();
     for (EffectKind k : set) names.push_back(manifest_of(k).name);
     ambiguous.push_back(names);
+  }
+  Json look_alikes = Json::array();
+  for (const LookAlike& l : d.look_alikes) {
+    look_alikes.push_back({{"named", manifest_of(l.chosen).name},
+                           {"alike", manifest_of(l.alike).name},
+                           {"cosine", num(l.cosine)},
+                           {"separate", l.separate}});
   }
   Json phases = Json::array();
   for (const auto& p : d.phases) {
@@ -182,6 +258,7 @@ std::string report_json(const Diagnosis& d) {
             {"verdict", verdict_name(d.verdict)},
             {"effects", effects},
             {"ambiguous", ambiguous},
+            {"look_alikes", look_alikes},
             {"shrink", num(d.shrink)},
             {"shrink_where", d.shrink_in_contact ? "contact" : "every sample"},
             {"rmse_before", num(d.rmse_before)},
@@ -251,6 +328,8 @@ std::string report_json(const Diagnosis& d) {
   j["events"] = events;
   j["by_force"] = by_force;
   j["folds"] = d.folds;
+  j["fold_sizes"] = nlohmann::json::array();
+  for (const FoldSize& f : d.fold_sizes) j["fold_sizes"].push_back({{"blocks", f.blocks}, {"fitted", f.fitted}});
   j["traces"] = d.judged_on;
   return j.dump();
 }
