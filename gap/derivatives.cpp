@@ -12,6 +12,14 @@ constexpr int kDegree = 6;
 
 }  // namespace
 
+double white_noise(const std::vector<double>& y) {
+  std::vector<double> d2;
+  for (size_t i = 0; i + 2 < y.size(); ++i) d2.push_back(std::abs(y[i] - 2 * y[i + 1] + y[i + 2]));
+  if (d2.empty()) return 0;
+  std::nth_element(d2.begin(), d2.begin() + static_cast<long>(d2.size() / 2), d2.end());
+  return 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
+}
+
 Derivatives local_derivatives(const std::vector<double>& t, const std::vector<double>& y) {
   const size_t n = t.size();
   const double dt = (t.back() - t.front()) / static_cast<double>(n - 1);

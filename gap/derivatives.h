@@ -25,6 +25,12 @@ struct Derivatives {
   double misfit_noise_gain = 0;
 };
 
+// The deviation of a signal's white noise: white noise of deviation s
+// gives second differences of deviation s * sqrt(6), which a smooth
+// signal hardly adds to; their median absolute value (times 1.4826 for a
+// normal law) is not moved by a few jumps (a stop, a reversal, a crack).
+double white_noise(const std::vector<double>& y);
+
 // `t` increasing, the same length as `y`, at least 2 samples.
 Derivatives local_derivatives(const std::vector<double>& t, const std::vector<double>& y);
 

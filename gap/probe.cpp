@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 
+#include "derivatives.h"
 #include "replay.h"
 #include "units.h"
 
@@ -34,20 +35,9 @@ std::string in_unit(double si, const char* unit, double per_unit) {
   return buf;
 }
 
-// White noise of deviation s gives second differences of deviation
-// s * sqrt(6); their median absolute value (times 1.4826 for a normal law)
-// is not moved by the few jumps of a stop or a reversal. No finer than the
-// column's printed resolution.
-double noise_of(const std::vector<double>& y, double resolution) {
-  std::vector<double> d2;
-  for (size_t i = 0; i + 2 < y.size(); ++i) d2.push_back(std::abs(y[i] - 2 * y[i + 1] + y[i + 2]));
-  double s = 0;
-  if (!d2.empty()) {
-    std::nth_element(d2.begin(), d2.begin() + static_cast<long>(d2.size() / 2), d2.end());
-    s = 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
-  }
-  return std::max(s, resolution);
-}
+// A signal's white noise (white_noise), no finer than the column's
+// printed resolution.
+double noise_of(const std::vector<double>& y, double resolution) { return std::max(white_noise(y), resolution); }
 
 double median(std::vector<double> v) {
   std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());

@@ -18,20 +18,12 @@ constexpr double kHeldBand = 0.1;        // friction's band below this share of 
 constexpr double kUnresolved = 2;        // a window's misfit this many times its noise's: the motion is not resolved
 constexpr double kDropTime = 0.02;       // s: a crack drops the actee's force within this
 
-// x, its rate and acceleration, and their noise: white noise of deviation
-// s gives second differences of deviation s * sqrt(6), which a smooth
-// motion hardly adds to; their median absolute deviation (times 1.4826
-// for a normal law) is not moved by a few jumps. No finer than the
-// printed `resolution` (rad or m), which a noise-free trace still has.
+// x, its rate and acceleration, and their noise (white_noise), no finer
+// than the printed `resolution` (rad or m), which a noise-free trace
+// still has.
 Derivatives differentiate(Replay& r, double resolution) {
   Derivatives d = local_derivatives(r.t, r.x);
-  std::vector<double> d2;
-  for (size_t i = 0; i + 2 < r.x.size(); ++i) d2.push_back(std::abs(r.x[i] - 2 * r.x[i + 1] + r.x[i + 2]));
-  if (!d2.empty()) {
-    std::nth_element(d2.begin(), d2.begin() + static_cast<long>(d2.size() / 2), d2.end());
-    r.x_noise = 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
-  }
-  r.x_noise = std::max(r.x_noise, resolution);
+  r.x_noise = std::max(white_noise(r.x), resolution);
   r.rate_noise = r.x_noise * d.rate_noise_gain;
   r.accel_noise = r.x_noise * d.accel_noise_gain;
   r.rate = std::move(d.rate);
@@ -86,14 +78,6 @@ size_t measured_break(const Replay& r, const std::vector<double>& actee, double 
   return SIZE_MAX;
 }
 
-// A signal's white noise, from its second differences (as above).
-double noise_of_signal(const std::vector<double>& y) {
-  std::vector<double> d2;
-  for (size_t i = 0; i + 2 < y.size(); ++i) d2.push_back(std::abs(y[i] - 2 * y[i + 1] + y[i + 2]));
-  if (d2.empty()) return 0;
-  std::nth_element(d2.begin(), d2.begin() + static_cast<long>(d2.size() / 2), d2.end());
-  return 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
-}
 
 // Phases from direction, contact and the limits; `limit` and `broken` say
 // which samples are at a limit and after the break.
@@ -248,7 +232,7 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
                                        broken.begin());
     } else if (measured_actee) {
       const std::vector<double>& force = trace[Signal::actee_force];
-      r.break_at = measured_break(r, force, noise_of_signal(force));
+      r.break_at = measured_break(r, force, white_noise(force));
     } else if (actee && model.actee_breaks) {
       double slope = 0;
       for (size_t i = 0; i < n && r.break_at == SIZE_MAX; ++i) {
@@ -292,7 +276,7 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       r.nominal = delayed(r.t, r.nominal, model.sensor_latency);
     }
     const std::vector<double>& effort = trace[Signal::effort_force];
-    const double effort_noise = std::max(noise_of_signal(effort), r.resolution);
+    const double effort_noise = std::max(white_noise(effort), r.resolution);
     const std::vector<bool> blurred = unresolved(d, r, effort, effort_noise, r.break_at);
     // The snap as the actee gives way lasts until the polynomial follows
     // the motion again over a whole window (and a late sensor has caught up).
