@@ -7,6 +7,7 @@
 #include "device_description.h"
 #include "measurement.h"
 #include "rule_tests.h"
+#include "setup_warnings.h"
 #include "validate.h"
 
 namespace afford::cli {
@@ -35,8 +36,11 @@ int check_files(const std::vector<std::string>& files) {
   int errors = 0;
   for (const std::string& path : files) {
     try {
-      const std::string what = validate_file(path);  // before printing: it may throw
+      std::vector<Warning> warnings;
+      const std::string what = validate_file(path, &warnings);  // before printing: it may throw
       std::cout << path << ": ok (" << what << ")\n";
+      std::cout.flush();  // before the warnings, in order on a terminal
+      for (const Warning& w : warnings) std::cerr << w.str() << "\n";
     } catch (const DataError& e) {
       std::cerr << e.what() << "\n";
       ++errors;

@@ -21,7 +21,11 @@ Json inferences_json(const RunResult& r) {
   Json functions = Json::array();
   for (const Inference& inf : r.inferences) {
     Json explanation = Json::array();
-    for (const NodeExplanation& n : inf.nodes) explanation.push_back({{"t", json_number(n.t)}, {"text", n.text}});
+    for (size_t i = 0; i < inf.nodes.size(); ++i) {
+      Json node = {{"t", json_number(inf.nodes[i].t)}, {"text", inf.nodes[i].text}};
+      if (i < inf.node_details.size() && !inf.node_details[i].empty()) node["detail"] = inf.node_details[i];
+      explanation.push_back(node);
+    }
     functions.push_back({{"name", inf.function}, {"t", json_number(inf.t)}, {"explanation", explanation}});
   }
   return functions;

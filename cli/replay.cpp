@@ -29,7 +29,12 @@ void print_inferences(const RunResult& r) {
   if (r.inferences.empty()) std::cout << "no function inferred\n";
   for (const Inference& inf : r.inferences) {
     std::printf("%s at %.3f s\n", inf.function.c_str(), inf.t);
-    for (const NodeExplanation& n : inf.nodes) std::printf("  %8.3f s  %s\n", n.t, n.text.c_str());
+    for (size_t i = 0; i < inf.nodes.size(); ++i) {
+      std::printf("  %8.3f s  %s\n", inf.nodes[i].t, inf.nodes[i].text.c_str());
+      if (i < inf.node_details.size() && !inf.node_details[i].empty()) {
+        std::printf("  %10s  %s\n", "", inf.node_details[i].c_str());  // the values behind its conditions
+      }
+    }
   }
   std::fflush(stdout);
 }

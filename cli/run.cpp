@@ -13,6 +13,7 @@
 
 #include "commands.h"
 #include "option_checks.h"
+#include "closest_approach.h"
 #include "files.h"
 #include "recording.h"
 #include "run.h"
@@ -33,14 +34,24 @@ std::string number(double v) {
   return buf;
 }
 
-void print_text(const CompiledSession& s, const RunResult& r, const std::string& written) {
+void print_text(const CompiledSession& s, const RunResult& r, const std::vector<FunctionProgress>& progress,
+                const std::string& written) {
   std::cout << "session " << s.name << ": " << s.description << "\n";
   std::cout << r.frames << " frames of " << format_quantity(s.model.timestep, dim::time) << " to "
             << number(r.end_time) << " s\n";
-  if (r.inferences.empty()) std::cout << "no function inferred\n";
+  if (r.inferences.empty()) {
+    // Why not: how near each function came (the rule tests' closest approach).
+    std::cout << "no function inferred\nhow close each function came:\n";
+    for (const FunctionProgress& p : progress) std::cout << "  " << p.function << ": " << progress_text(p) << "\n";
+  }
   for (const Inference& inf : r.inferences) {
     std::printf("%s at %.3f s\n", inf.function.c_str(), inf.t);
-    for (const NodeExplanation& n : inf.nodes) std::printf("  %8.3f s  %s\n", n.t, n.text.c_str());
+    for (size_t i = 0; i < inf.nodes.size(); ++i) {
+      std::printf("  %8.3f s  %s\n", inf.nodes[i].t, inf.nodes[i].text.c_str());
+      if (i < inf.node_details.size() && !inf.node_details[i].empty()) {
+        std::printf("  %10s  %s\n", "", inf.node_details[i].c_str());  // the values behind its conditions
+      }
+    }
   }
   std::cout << "wrote " << written << "\n";
 }
@@ -54,25 +65,29 @@ void print_json(const CompiledSession& s, const RunResult& r) {
 // the verdicts.
 void run_once(const CompiledSession& session, const std::string& out_dir, bool json,
               const std::string& record = {}) {
+  for (const Warning& w : session.warnings) std::cerr << w.str() << "\n";  // it runs, but see why it may do nothing
   RunResult result;
+  std::vector<FunctionProgress> closest;  // each function's closest approach
   std::int64_t recorded = -1;
   std::string written;
   {
     SessionOutputs outputs(output_dir(out_dir, session.name));
     written = outputs.written();
-    std::vector<Observer*> observers = {outputs.timeline(), outputs.trace()};
+    ProgressObserver progress;
+    std::vector<Observer*> observers = {outputs.timeline(), outputs.trace(), &progress};
     std::optional<Recorder> recorder;
     if (!record.empty()) observers.push_back(&recorder.emplace(record, session, "script " + session.file));
     ScriptedAgent agent(session.script);
     result = run_session(session.model, *session.rules, agent, observers);
     if (recorder && !recorder->error().empty()) throw std::runtime_error(recorder->error());
     if (recorder) recorded = recorder->frames();
+    closest = progress.progress();
     outputs.close();  // a full disk: exit 1 naming the file, never "wrote"
   }
   if (json) {
     print_json(session, result);
   } else {
-    print_text(session, result, written);
+    print_text(session, result, closest, written);
     if (recorded >= 0) std::cout << "recorded " << recorded << " frames to " << record << "\n";
   }
   std::cout.flush();

@@ -40,7 +40,7 @@ void compile_parts(const ObjectSpec& o, Model& m) {
   double total = 0, moving = 0;
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // m^4: volume times centroid, moving arm frame
   for (const PartSpec& p : o.parts) {
-    m.parts.push_back(ModelPart{p.name, p.arm, Geometry::compile(p.shape), to_isometry(p.pose)});
+    m.parts.push_back(ModelPart{p.name, p.arm, Geometry::compile(p.shape), to_isometry(p.pose), p.friction});
     const ModelPart& part = m.parts.back();
     const double v = part.geometry.volume();
     total += v;
@@ -102,6 +102,7 @@ void compile_actee(const ActeeSpec& a, const ModelOptions& options, Model& m) {
   m.actee_stiffness = a.stiffness;
   m.actee_breaks = a.breaks;
   m.actee_mass = a.mass;
+  m.actee_friction = a.friction;
   if (!options.actee.in_jaws) {
     m.actee_start = options.actee.world;
     return;
@@ -112,6 +113,13 @@ void compile_actee(const ActeeSpec& a, const ModelOptions& options, Model& m) {
     fail(options.actee.loc,
          "a distance on the arm, between " + format_quantity(m.arm_from, dim::length) + " and " +
              format_quantity(m.arm_to, dim::length),
+         format_quantity(r, dim::length));
+  }
+  // Only the application region is jaw: elsewhere the arms are handles.
+  if (r < m.application_from || r > m.application_to) {
+    fail(options.actee.loc,
+         "a distance in the application region, between " + format_quantity(m.application_from, dim::length) +
+             " and " + format_quantity(m.application_to, dim::length),
          format_quantity(r, dim::length));
   }
   const double lift = m.actee().support(-Eigen::Vector3d::UnitY());

@@ -23,6 +23,9 @@ ShapeSpec read_shape(const Node& node);
 PoseSpec read_pose(MapReader& map);     // keys position (required), rotation (optional)
 RangeSpec read_range(const Node& node, const std::string& what);  // {from, to}
 Eigen::Vector3d read_direction(const Node& node);  // three numbers, made unit
+// `{coefficient: mu, source: text}`: a coefficient of static friction above
+// 0 and at most 3, and where it was published (actees, and tool parts).
+double read_friction(const Node& node, std::string* source);
 // The `effects:` mapping of a file of kind `home` (load_effects.cpp).
 std::vector<EffectSpec> read_effects(const Node& node, EffectHome home);
 
@@ -33,6 +36,7 @@ const MapSchema& actee_schema();
 const MapSchema& agent_schema();
 const MapSchema& shape_schema();
 const MapSchema& range_schema();
+const MapSchema& friction_schema();
 std::vector<KeySchema> pose_keys(const std::string& what);  // position, rotation
 const MapSchema& effects_schema(EffectHome home);
 

@@ -17,6 +17,8 @@ const MapSchema& actee_schema() {
                     "A_pv: the force along force_direction above which it breaks (or counts as squeezed)"),
        required_key("stiffness", quantity(dim::stiffness), "its contact stiffness at small deflections"),
        required_key("breaks", boolean(), "true: brittle, breaks above the limit; false: compliant, never breaks"),
+       required_key("friction", mapping(friction_schema()),
+                    "its static friction on the jaws: the grip must carry its weight for it to count as held"),
        optional_key("effects", mapping(effects_schema(EffectHome::actee)), "optional effects of the actee")}};
   return kActee;
 }
@@ -36,6 +38,7 @@ ActeeSpec read_actee(const Node& root) {
   a.limit = read_positive(limit, dim::force);
   a.stiffness = read_positive(m.required("stiffness"), dim::stiffness);
   a.breaks = read_bool(m.required("breaks"));
+  a.friction = read_friction(m.required("friction"), &a.friction_source);
   if (std::optional<Node> effects = m.optional("effects")) a.effects = read_effects(*effects, EffectHome::actee);
   return a;
 }

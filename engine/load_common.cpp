@@ -1,4 +1,5 @@
-// Readers shared by every kind of file: shapes, poses, ranges, directions.
+// Readers shared by every kind of file: shapes, poses, ranges, directions,
+// friction.
 #include <cmath>
 
 #include "load.h"
@@ -145,6 +146,27 @@ Eigen::Vector3d read_direction(const Node& node) {
   const Eigen::Vector3d v = read_plain_vector(node);
   if (!(v.norm() > 1e-12)) node.fail("a direction, not all zeros");
   return v.normalized();
+}
+
+// Rubber on rough steel reaches about 1 to 2; beyond 3 is a typo.
+constexpr double kMaxFriction = 3;
+
+const MapSchema& friction_schema() {
+  using namespace schema;
+  static const MapSchema kFriction{
+      "a coefficient of static friction against the tool's jaws, and where it was published",
+      {required_key("coefficient", number(), "mu: above 0, at most 3"),
+       required_key("source", text(), "the publication the coefficient comes from")}};
+  return kFriction;
+}
+
+double read_friction(const Node& node, std::string* source) {
+  MapReader m(node, "the friction", friction_schema());
+  const Node mu = m.required("coefficient");
+  const double friction = read_number(mu);
+  if (!(friction > 0) || friction > kMaxFriction) mu.fail("a coefficient above 0 and at most 3");
+  *source = read_string(m.required("source"));
+  return friction;
 }
 
 std::string file_kind(const Node& root) {

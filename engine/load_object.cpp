@@ -57,6 +57,9 @@ const MapSchema& part_schema() {
                  required_key("arm", choice({"fixed", "moving"}), "the arm the part belongs to"),
                  required_key("shape", mapping(shape_schema()), "the part's collision shape")}};
     for (KeySchema& k : pose_keys("the part")) m.keys.push_back(std::move(k));
+    m.keys.push_back(optional_key("friction", mapping(friction_schema()),
+                                  "its surface's static friction on any actee (rubber tips, serrations); "
+                                  "without it, the actee's own"));
     return m;
   }();
   return kPart;
@@ -184,7 +187,9 @@ void check_pattern(const ObjectSpec& o) {
   }
 }
 
-PartSpec read_part(const Node& node) {
+// A part sits on its arm: its position along the arm (x) within the arm's
+// extent, else it would hang in the air beyond the tool.
+PartSpec read_part(const Node& node, const RangeSpec& arm) {
   MapReader m(node, "a part", part_schema());
   PartSpec part;
   part.loc = node.loc();
@@ -192,6 +197,14 @@ PartSpec read_part(const Node& node) {
   part.arm = read_choice(m.required("arm"), {"fixed", "moving"}) == "fixed" ? Arm::fixed : Arm::moving;
   part.shape = read_shape(m.required("shape"));
   part.pose = read_pose(m);
+  if (std::optional<Node> friction = m.optional("friction")) part.friction = read_friction(*friction, &part.friction_source);
+  const double along = part.pose.position.x();
+  if (along < arm.from || along > arm.to) {
+    fail(node.child(node.yaml()["position"]).loc(),
+         "a part on its arm: a position along it (x) between " + format_quantity(arm.from, dim::length) + " and " +
+             format_quantity(arm.to, dim::length),
+         format_quantity(along, dim::length));
+  }
   return part;
 }
 
@@ -248,7 +261,7 @@ ObjectSpec read_object(const Node& root) {
   if (!parts.is_sequence() || parts.size() == 0) parts.fail("a sequence of parts");
   bool has_arm[2] = {false, false};
   for (size_t i = 0; i < parts.size(); ++i) {
-    PartSpec part = read_part(parts[i]);
+    PartSpec part = read_part(parts[i], o.lever.arm);
     for (const PartSpec& other : o.parts) {
       if (other.name == part.name) parts[i].fail("a part name used once", "'" + part.name + "' again");
     }

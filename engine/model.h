@@ -42,6 +42,7 @@ struct ModelPart {
   Arm arm = Arm::fixed;
   Geometry geometry;
   Eigen::Isometry3d in_arm = Eigen::Isometry3d::Identity();  // part pose in its arm's frame
+  double friction = 0;  // mu of an actee on its surface; 0: the actee's own (actee_friction)
 };
 
 // An effect as a file switched it on or off, for reports; the solver reads
@@ -99,6 +100,7 @@ struct Model {
   double actee_stiffness = 0;   // N/m
   bool actee_breaks = true;
   double actee_mass = 0;        // kg
+  double actee_friction = 0;    // mu, static, of the actee on the jaws: the grip that carries its weight
   Eigen::Isometry3d actee_start = Eigen::Isometry3d::Identity();  // world
 
   // agent (Fig. 8); absent when has_agent is false

@@ -11,6 +11,7 @@
 
 #include "did_you_mean.h"
 #include "load.h"
+#include "closest_approach.h"
 #include "rules_impl.h"
 #include "run.h"
 #include "units.h"
@@ -71,12 +72,6 @@ Node key_node(const Node& map, std::string_view key) {
     if (it->first.Scalar() == key) return map.child(it->first);
   }
   return map;
-}
-
-std::string seconds(double t) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f s", t);
-  return buf;
 }
 
 std::string window_text(const TimeWindow& w) {
@@ -209,148 +204,11 @@ Node inline_session_document(const RuleCase& c) {
   return given.child(doc);
 }
 
-// ------------------------------------------------------------ the progress observer
-
-// How close a node's condition came to holding this frame (larger is
-// closer): for a comparison its margin, otherwise how many of its
-// sub-conditions hold.
-double closeness(const RuleNode& node, const std::vector<double>& value) {
-  const ExprNode& root = node.tree.nodes[static_cast<size_t>(node.tree.root)];
-  auto v = [&](int tree_index) {
-    return value[static_cast<size_t>(node.tree_slot[static_cast<size_t>(tree_index)])];
-  };
-  if (root.kind == ExprKind::binary && is_comparison(root.op)) {
-    const double a = v(root.children[0]), b = v(root.children[1]);
-    if (root.op == ">" || root.op == ">=") return a - b;
-    if (root.op == "<" || root.op == "<=") return b - a;
-    if (root.op == "==") return -std::abs(a - b);
-    return std::abs(a - b);
-  }
-  double held = 0;
-  for (size_t i = 0; i < node.tree.nodes.size(); ++i) {
-    if (node.tree_boolean[i] && v(static_cast<int>(i)) != 0) held += 1;
-  }
-  return held;
-}
-
-// Watches a run: per function, the furthest its trace got, and for the node
-// it stopped before, the values at the frame it came closest and its
-// longest hold. Allocates only in on_start and on_end.
-class ProgressObserver : public Observer {
- public:
-  void on_start(const Model&, const State&, const RuleSet& rules) override {
-    track_.assign(rules.functions.size(), Track{});
-    for (size_t f = 0; f < rules.functions.size(); ++f) {
-      size_t most = 0;
-      for (const RuleNode& node : rules.functions[f].nodes) most = std::max(most, node.tree.nodes.size());
-      track_[f].values.assign(most, 0.0);
-    }
-  }
-
-  void on_frame(const Model&, const State& state, const RuleSet& rules, const RuleState& rs) override {
-    const double t = state.t;
-    for (size_t f = 0; f < rules.functions.size(); ++f) {
-      const RuleFunction& fn = rules.functions[f];
-      Track& tr = track_[f];
-      const int stage = rs.trace[f].stage;
-      if (stage > tr.furthest) {
-        tr.furthest = stage;
-        tr.furthest_t = t;
-        tr.has_values = false;
-        tr.longest_hold = 0;
-      }
-      if (stage != tr.furthest || stage >= static_cast<int>(fn.nodes.size())) continue;
-      const RuleNode& node = fn.nodes[static_cast<size_t>(stage)];
-      if (node.required >= 0) continue;
-      const size_t flat = static_cast<size_t>(rs.node_base[f] + stage);
-      if (rs.holds[flat]) tr.longest_hold = std::max(tr.longest_hold, t - rs.true_since[flat]);
-      const double score = closeness(node, rs.value);
-      if (!tr.has_values || score > tr.score) {
-        for (size_t k = 0; k < node.tree_slot.size(); ++k) {
-          tr.values[k] = rs.value[static_cast<size_t>(node.tree_slot[k])];
-        }
-        tr.score = score;
-        tr.values_t = t;
-        tr.has_values = true;
-      }
-    }
-  }
-
-  void on_end(const Model&, const State&, const RuleSet& rules, const RuleState& rs) override {
-    progress_.clear();
-    for (size_t f = 0; f < rules.functions.size(); ++f) {
-      const RuleFunction& fn = rules.functions[f];
-      const Track& tr = track_[f];
-      FunctionProgress p;
-      p.function = fn.name;
-      p.nodes = static_cast<int>(fn.nodes.size());
-      p.furthest = tr.furthest;
-      p.furthest_t = tr.furthest_t;
-      if (tr.furthest < p.nodes) p.stopped_at = stopped_at(rules, fn, tr);
-      progress_.push_back(std::move(p));
-    }
-    coverage_.file = rules.file;
-    coverage_.functions.clear();
-    std::vector<size_t> order(rules.functions.size());
-    for (size_t f = 0; f < order.size(); ++f) order[f] = f;
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-      const SourceLoc& la = rules.functions[a].loc;
-      const SourceLoc& lb = rules.functions[b].loc;
-      return la.line != lb.line ? la.line < lb.line : la.column < lb.column;
-    });
-    for (size_t f : order) {
-      const RuleFunction& fn = rules.functions[f];
-      FunctionCoverage fc;
-      fc.name = fn.name;
-      for (size_t i = 0; i < fn.nodes.size(); ++i) {
-        fc.nodes.push_back({fn.nodes[i].text, fn.nodes[i].loc, node_ever_reached(rs, static_cast<int>(f), static_cast<int>(i))});
-      }
-      coverage_.functions.push_back(std::move(fc));
-    }
-  }
-
-  std::vector<FunctionProgress> progress() const { return progress_; }
-  const RulesCoverage& coverage() const { return coverage_; }
-
- private:
-  struct Track {
-    int furthest = 0;
-    double furthest_t = 0;
-    bool has_values = false;
-    double score = 0;
-    double values_t = 0;
-    double longest_hold = 0;  // s
-    std::vector<double> values;  // per tree node of the node stopped before, at values_t
-  };
-
-  static std::string stopped_at(const RuleSet& rules, const RuleFunction& fn, const Track& tr) {
-    const RuleNode& node = fn.nodes[static_cast<size_t>(tr.furthest)];
-    std::string s = "'" + node.text + "' (" + node.loc.str() + ")";
-    if (node.required >= 0) {
-      return s + ": " + rules.functions[static_cast<size_t>(node.required)].name + " was never inferred";
-    }
-    if (node.min_duration > 0 && tr.longest_hold > 0) {
-      s += ": true for at most " + seconds(tr.longest_hold) + " of the " +
-           format_quantity(node.min_duration, dim::time) + " it needs";
-    } else {
-      s += ": never true";
-    }
-    if (tr.has_values) {
-      s += "; closest at " + seconds(tr.values_t) + ": " + explain_node(node, tr.values.data());
-    }
-    return s;
-  }
-
-  std::vector<Track> track_;
-  std::vector<FunctionProgress> progress_;
-  RulesCoverage coverage_;
-};
-
 // ------------------------------------------------------------ judging
 
 std::string explain(const Inference& inf) {
   std::string s;
-  for (const NodeExplanation& n : inf.nodes) s += (s.empty() ? "" : ", ") + n.text + " at " + seconds(n.t);
+  for (const NodeExplanation& n : inf.nodes) s += (s.empty() ? "" : ", ") + n.text + " at " + format_seconds(n.t);
   return s;
 }
 
@@ -364,27 +222,16 @@ double distance(double t, const std::optional<TimeWindow>& w) {
   return t < w->from ? w->from - t : (t > w->to ? t - w->to : 0.0);
 }
 
-std::string progress_text(const FunctionProgress& p) {
-  std::string s;
-  if (p.furthest == 0) {
-    s = "its trace reached none of its " + std::to_string(p.nodes) + " nodes";
-  } else {
-    s = "its trace reached " + std::to_string(p.furthest) + " of its " + std::to_string(p.nodes) + " nodes (by " +
-        seconds(p.furthest_t) + ")";
-  }
-  return s + ", then stopped at " + p.stopped_at;
-}
-
 // "pinch at 1.181 s, 3.100 s; nearest at 1.181 s because ..." (all not empty).
 std::string inferred_text(const std::string& function, const std::vector<const Inference*>& all,
                           const std::optional<TimeWindow>& window) {
   std::string s = function + " at ";
   const Inference* nearest = all.front();
   for (size_t i = 0; i < all.size(); ++i) {
-    s += (i ? ", " : "") + seconds(all[i]->t);
+    s += (i ? ", " : "") + format_seconds(all[i]->t);
     if (distance(all[i]->t, window) < distance(nearest->t, window)) nearest = all[i];
   }
-  return s + (all.size() > 1 ? "; nearest at " + seconds(nearest->t) : std::string()) + " because " + explain(*nearest);
+  return s + (all.size() > 1 ? "; nearest at " + format_seconds(nearest->t) : std::string()) + " because " + explain(*nearest);
 }
 
 std::string times_text(int n) { return n == 1 ? "once" : (n == 2 ? "twice" : std::to_string(n) + " times"); }
@@ -550,7 +397,7 @@ std::vector<std::string> judge_rule_case(const RuleCase& c, const CaseRun& run) 
     if (hits.empty()) continue;
     std::string s = "expected no " + r.function + (r.within ? " within " + window_text(*r.within) : "") + ", got " +
                     r.function + " at ";
-    for (size_t i = 0; i < hits.size(); ++i) s += (i ? ", " : "") + seconds(hits[i]->t);
+    for (size_t i = 0; i < hits.size(); ++i) s += (i ? ", " : "") + format_seconds(hits[i]->t);
     failures.push_back(s + " because " + explain(*hits.front()));
   }
   return failures;

@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "closest_approach.h"
 #include "rules.h"
 #include "sample_source.h"
 #include "script.h"
@@ -100,36 +101,6 @@ RuleCase load_rule_case(const std::string& path);
 CompiledSession compile_rule_case(const RuleCase& c);
 
 // ------------------------------------------------------------ a run
-
-// How far one function's trace got in a run: the explanation of a function
-// that was not inferred.
-struct FunctionProgress {
-  std::string function;
-  int nodes = 0;          // its node count
-  int furthest = 0;       // the most nodes it had reached at once (== nodes: inferred)
-  double furthest_t = 0;  // s, when it first got that far
-  // The node it stopped before (furthest < nodes), as written with its
-  // file:line:col, and why it did not count: its values at the frame it
-  // came closest (a comparison: the largest margin; otherwise the most
-  // sub-conditions true, or the longest hold for a node with `for`).
-  std::string stopped_at;
-};
-
-struct NodeCoverage {
-  std::string text;  // the `when` as written (or "<f> inferred")
-  SourceLoc loc;
-  bool reached = false;
-};
-struct FunctionCoverage {
-  std::string name;
-  std::vector<NodeCoverage> nodes;
-};
-// Which nodes of one function-model file the runs reached; functions in
-// file order.
-struct RulesCoverage {
-  std::string file;
-  std::vector<FunctionCoverage> functions;
-};
 
 struct CaseRun {
   std::vector<Inference> inferences;       // in order

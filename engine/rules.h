@@ -70,6 +70,9 @@ struct Inference {
   std::string function;
   double t = 0;  // s
   std::vector<NodeExplanation> nodes;
+  // Per node, the values behind its conditions ("grip_margin(actee) =
+  // 46.26 N" for held(actee)); empty when it has none.
+  std::vector<std::string> node_details;
 };
 
 // Every inference so far, explained (allocates: call after frames, not in one).

@@ -27,6 +27,7 @@ class Compiler {
   int compile(RuleNode& node) {
     const size_t n = node.tree.nodes.size();
     node.tree_slot.assign(n, -1);
+    node.details.clear();
     node.tree_dimension.assign(n, dim::none);
     node.tree_boolean.assign(n, false);
     // Children come before their parents: one pass in index order, no
@@ -80,6 +81,7 @@ class Compiler {
         t.boolean = s->boolean;
         t.dimension = s->dimension;
         slot = emit({Op::signal, -1, -1, 0, s});
+        if (const Signal* why = explaining_signal(*s)) node.details.push_back({why});
         break;
       }
       case ExprKind::unary: {
@@ -290,7 +292,7 @@ std::shared_ptr<const RuleSet> compile_rules(const Node& root) {
         node.min_duration = read_non_negative(*d, dim::time);
       }
       node.value_offset = fn.value_count;
-      fn.value_count += static_cast<int>(node.tree.nodes.size());
+      fn.value_count += static_cast<int>(node.tree.nodes.size() + node.details.size());
       fn.nodes.push_back(std::move(node));
     }
     rules->functions.push_back(std::move(fn));

@@ -47,13 +47,15 @@ void run_program(const RuleSet& rules, RuleState& rs, const Model& m, const Stat
   }
 }
 
-void reach(const RuleFunction& fn, RuleState& rs, int f, int i, double t) {
+void reach(const RuleFunction& fn, RuleState& rs, int f, int i, double t, const Model& m, const State& s) {
   const size_t flat = static_cast<size_t>(rs.node_base[static_cast<size_t>(f)] + i);
   const RuleNode& node = fn.nodes[static_cast<size_t>(i)];
   rs.reached_at[flat] = t;
   rs.ever_reached[flat] = 1;
   double* out = rs.reached_values.data() + rs.value_base[static_cast<size_t>(f)] + node.value_offset;
   for (size_t k = 0; k < node.tree_slot.size(); ++k) out[k] = rs.value[static_cast<size_t>(node.tree_slot[k])];
+  out += node.tree_slot.size();
+  for (size_t k = 0; k < node.details.size(); ++k) out[k] = node.details[k].signal->read(m, s);
   emit(rs, EventKind::node_reached, t, f, i);
 }
 
@@ -143,7 +145,7 @@ void evaluate(const RuleSet& rules, RuleState& rs, const Model& m, const State& 
       const size_t flat = static_cast<size_t>(base + tr.stage);
       const RuleNode& node = fn.nodes[static_cast<size_t>(tr.stage)];
       if (!rs.holds[flat] || t - rs.true_since[flat] < node.min_duration - kTimeSlack) break;
-      reach(fn, rs, static_cast<int>(f), tr.stage, t);
+      reach(fn, rs, static_cast<int>(f), tr.stage, t, m, s);
       ++tr.stage;
     }
     if (tr.stage == n && !tr.completed) {

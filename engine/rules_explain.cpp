@@ -107,6 +107,15 @@ std::string explain_node(const RuleNode& node, const double* tree_values) {
   return Writer(node, tree_values).write(node.tree.root);
 }
 
+std::string explain_details(const RuleNode& node, const double* detail_values) {
+  std::string text;
+  for (size_t k = 0; k < node.details.size(); ++k) {
+    const Signal& s = *node.details[k].signal;
+    text += (k ? "; " : "") + signature(s) + " = " + format_value(detail_values[k], s.boolean, s.dimension);
+  }
+  return text;
+}
+
 std::vector<Inference> inferences(const RuleSet& rules, const RuleState& rs) {
   std::vector<Inference> out;
   for (const RuleState::Record& r : rs.log) {
@@ -125,6 +134,10 @@ std::vector<Inference> inferences(const RuleSet& rules, const RuleState& rs) {
       }
       if (node.min_duration > 0) text += " (held for " + format_quantity(node.min_duration, dim::time) + ")";
       inf.nodes.push_back({text, t});
+      inf.node_details.push_back(
+          node.details.empty()
+              ? std::string()
+              : explain_details(node, rs.log_values.data() + r.values_at + node.value_offset + node.tree.nodes.size()));
     }
     out.push_back(std::move(inf));
   }

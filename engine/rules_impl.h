@@ -34,6 +34,13 @@ struct RuleNode {
   std::vector<int> tree_slot;            // per tree node, its slot
   std::vector<Dimension> tree_dimension;  // per tree node, its dimension
   std::vector<bool> tree_boolean;        // per tree node, whether it is a condition
+  // Values that explain a condition signal of the tree (explaining_signal),
+  // read from the state and recorded after the tree's values when the node
+  // is reached (not part of the program: no frame computes them otherwise).
+  struct Detail {
+    const Signal* signal = nullptr;
+  };
+  std::vector<Detail> details;
   int value_offset = 0;       // where its tree's values start in the function's value block
 };
 
@@ -90,6 +97,10 @@ inline constexpr size_t kMaxRecordedInferences = 4096;
 // A node's condition written out with the values of its tree (one per tree
 // node, in tree order): "load(actee) = 312 N > limit(actee) = 300 N".
 std::string explain_node(const RuleNode& node, const double* tree_values);
+
+// The node's details (RuleNode::details) with their values, in order:
+// "grip_margin(actee) = 46.26 N"; empty when it has none.
+std::string explain_details(const RuleNode& node, const double* detail_values);
 
 // True for < <= > >= == !=.
 bool is_comparison(const std::string& op);

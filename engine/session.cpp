@@ -117,6 +117,7 @@ CompiledSession read_session(const Node& root) {
 
   s.rules = load_rules(rules_path);
   s.model = compile(object, actee ? &*actee : nullptr, &agent, options);
+  s.warnings = setup_warnings(s.model, object.spring.loc);
   s.script = compile_script(script, s.model);
   return s;
 }

@@ -37,6 +37,7 @@
 #include "model.h"
 #include "rules.h"
 #include "script.h"
+#include "setup_warnings.h"
 #include "yaml_reader.h"
 
 namespace afford {
@@ -59,6 +60,7 @@ struct CompiledSession {
   Script script;
   SessionCamera camera;     // `camera:`, optional
   std::vector<std::string> files;  // every file read, the session first (for --watch)
+  std::vector<Warning> warnings;   // what the hand can never do (setup_warnings.h)
 };
 
 CompiledSession load_session(const std::string& path);

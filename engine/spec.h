@@ -93,6 +93,8 @@ struct PartSpec {
   Arm arm = Arm::fixed;
   ShapeSpec shape;
   PoseSpec pose;  // in the arm's frame
+  double friction = 0;          // mu of any actee on its surface; 0: the actee's own coefficient
+  std::string friction_source;  // where that coefficient was published
   SourceLoc loc;
 };
 
@@ -130,6 +132,8 @@ struct ActeeSpec {
   double limit = 0;                     // N, A_pv: breaks (or counts as squeezed) above it
   double stiffness = 0;                 // N/m, contact stiffness up to the limit
   bool breaks = true;                   // brittle; false: deforms and never breaks
+  double friction = 0;                  // its coefficient of static friction on the jaws (mu, > 0)
+  std::string friction_source;          // where the coefficient was published
   std::vector<EffectSpec> effects;      // actee_compliance
   SourceLoc loc, limit_loc;
 };

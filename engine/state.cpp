@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "stages.h"
+#include "terms.h"
 
 namespace afford {
 
@@ -48,6 +49,7 @@ void reset(const Model& m, State& s) {
                                         &s.jaw_contact) == JawFit::fits;
     if (!s.between_jaws) s.load_distance = 0;
     s.actee_thickness = thickness_across_jaws(m, s.actee_in_object);
+    s.grip_margin = grip_margin(m.actee_friction, m.actee_friction, m.actee_mass, 0);
   }
   // The delay in whole frames and one more, to interpolate between two.
   if (m.sensor_latency > 0) {
@@ -110,7 +112,7 @@ std::uint64_t state_hash(const State& s) {
   for (double x : {s.theta, s.omega, s.alpha, s.theta_command, s.effort_distance, s.load_distance,
                    s.thumb_speed, s.compression, s.effort_force, s.effort_excess, s.contact_angle,
                    s.actee_force, s.actee_load, s.actee_compression, s.peak_actee_load, s.broke_at,
-                   s.max_force, s.omega_command, s.effort_sensed, s.actee_thickness}) {
+                   s.max_force, s.omega_command, s.effort_sensed, s.actee_thickness, s.grip_margin}) {
     h.value(x);
   }
   h.value(s.torque);

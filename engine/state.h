@@ -118,7 +118,8 @@ struct State {
   double peak_actee_load = 0;    // N, largest actee_load so far
   ActeeCondition condition = ActeeCondition::intact;
   double broke_at = -1;          // s, when it broke; -1 if it has not
-  bool held = false;             // gripped between both jaws
+  double grip_margin = 0;        // N, 2*mu*F_acr - m*g: weight the jaws' friction could carry beyond the actee's
+  bool held = false;             // gripped between both jaws, firmly enough to carry its weight
   Eigen::Vector3d actee_start_position = Eigen::Vector3d::Zero();  // m, world
 
   std::vector<JawContact> jaw_contact;  // per model part, sized once by reset()

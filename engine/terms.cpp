@@ -5,9 +5,9 @@
 
 namespace afford {
 
-namespace {
-constexpr double kStandardGravity = 9.80665;  // m/s^2, along the world's -z
-}  // namespace
+double grip_margin(double mu_fixed, double mu_moving, double mass_kg, double actee_force_n) {
+  return (mu_fixed + mu_moving) * actee_force_n - mass_kg * kStandardGravity;
+}
 
 double spring_compression(const Model& m, double theta_rad) {
   return std::abs(m.spring_position) * (m.theta_rest - theta_rad) + m.spring_preload / m.spring_constant;

@@ -10,6 +10,18 @@
 
 namespace afford {
 
+inline constexpr double kStandardGravity = 9.80665;  // m/s^2, along the world's -z
+
+// How much more weight (N) the jaws' friction could carry than the actee's
+// own (mass_kg), gripped with actee_force_n: (mu_fixed + mu_moving) * F_acr
+// - m * g, 2 * mu * F_acr - m * g when both jaws have the same coefficient.
+// Two jaws press on it with F_acr each, and each contact can take up to
+// mu * F_acr along its face before it slips (Coulomb); the weight is taken
+// whole along the faces, as with the jaws across gravity (the shipped
+// functional poses). A jaw beneath the actee would bear part of it, so a
+// tilted tool errs on the side of not holding.
+double grip_margin(double mu_fixed, double mu_moving, double mass_kg, double actee_force_n);
+
 // Spring compression d (m) of eq. 4 at opening angle theta, along the arc
 // the spring's end travels: |S_p| * (rest - theta), plus the preload's
 // compression (preload / S_k) when spring_preload is on.

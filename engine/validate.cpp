@@ -31,9 +31,11 @@ std::vector<std::string> file_kinds() {
   return kinds;
 }
 
-std::string validate_file(const std::string& path) { return validate_node(load_yaml_file(path)); }
+std::string validate_file(const std::string& path, std::vector<Warning>* warnings) {
+  return validate_node(load_yaml_file(path), warnings);
+}
 
-std::string validate_node(const Node& root) {
+std::string validate_node(const Node& root, std::vector<Warning>* warnings) {
   const std::string kind = file_kind(root);
   if (kind == "object") {
     const ObjectSpec o = read_object(root);
@@ -52,6 +54,7 @@ std::string validate_node(const Node& root) {
   }
   if (kind == "session") {
     const CompiledSession session = read_session(root);
+    if (warnings != nullptr) warnings->insert(warnings->end(), session.warnings.begin(), session.warnings.end());
     return "session " + session.name + ", " + std::to_string(session.files.size()) + " files";
   }
   if (kind == "guides") return "guides, " + std::to_string(read_guides(root).size()) + " guides";

@@ -64,8 +64,12 @@ const std::vector<Signal>& signal_registry() {
        [](const Model&, const State& s) { return flag(s.condition == ActeeCondition::squeezed); }},
       {"intact", {E::actee}, false, true, dim::none, "the actee is neither squeezed nor broken",
        [](const Model&, const State& s) { return flag(s.condition == ActeeCondition::intact); }},
-      {"held", {E::actee}, false, true, dim::none, "the jaws grip the actee with some force, so it moves with them",
+      {"held", {E::actee}, false, true, dim::none,
+       "the jaws grip the actee and their friction carries its weight (grip_margin >= 0), so it moves with them",
        [](const Model&, const State& s) { return flag(s.held); }},
+      {"grip_margin", {E::actee}, false, false, dim::force,
+       "2 * mu * F_acr - m * g: how much more weight the jaws' friction could carry than the actee's",
+       [](const Model&, const State& s) { return s.grip_margin; }},
       {"between_jaws", {E::actee}, false, true, dim::none, "the actee sits where the jaws can close on it",
        [](const Model&, const State& s) { return flag(s.between_jaws); }},
       {"angle", {E::object}, false, false, dim::angle, "the lever's opening angle",
@@ -125,6 +129,11 @@ const Signal* find_signal(const std::string& name, const std::vector<Entity>& ar
     if (args == s.args) return &s;
     if (s.symmetric && args.size() == 2 && args[0] == s.args[1] && args[1] == s.args[0]) return &s;
   }
+  return nullptr;
+}
+
+const Signal* explaining_signal(const Signal& condition) {
+  if (std::string(condition.name) == "held") return find_signal("grip_margin", condition.args);
   return nullptr;
 }
 

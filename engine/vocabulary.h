@@ -30,6 +30,9 @@ const std::vector<Signal>& signal_registry();
 // Finds the signal for name(args); nullptr when none matches. `names` gets
 // every signal name, for "did you mean".
 const Signal* find_signal(const std::string& name, const std::vector<Entity>& args);
+// The number that says why a condition holds or not, given with it in an
+// inference's explanation: grip_margin(actee) for held(actee). nullptr: none.
+const Signal* explaining_signal(const Signal& condition);
 std::vector<std::string> signal_names();
 bool parse_entity(const std::string& text, Entity* out);
 const char* entity_name(Entity e);

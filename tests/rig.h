@@ -85,11 +85,13 @@ fingers:
 inline std::string nut_yaml(double limit_n = 300, double stiffness = 3e5) {
   return "actee: nut\ndescription: test nut\nshape: {sphere: {radius: 10 mm}}\nmass: 5 g\n"
          "force_direction: [0, 1, 0]\nlimit: " + std::to_string(limit_n) + " N\nstiffness: " +
-         std::to_string(stiffness) + " N/m\nbreaks: true\n";
+         std::to_string(stiffness) + " N/m\nbreaks: true\n"
+         "friction: {coefficient: 0.4, source: test}\n";
 }
 inline const char* kSpongeYaml =
     "actee: sponge\ndescription: test sponge\nshape: {sphere: {radius: 15 mm}}\nmass: 5 g\n"
-    "force_direction: [0, 1, 0]\nlimit: 5 N\nstiffness: 800 N/m\nbreaks: false\n";
+    "force_direction: [0, 1, 0]\nlimit: 5 N\nstiffness: 800 N/m\nbreaks: false\n"
+    "friction: {coefficient: 0.5, source: test}\n";
 
 inline ObjectSpec object_from(const std::string& yaml) {
   return read_object(load_yaml_string(yaml, "tool.yaml"));

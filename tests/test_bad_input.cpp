@@ -73,7 +73,8 @@ const std::string kWalnut =
     "force_direction: [0, 1, 0]\n"                                     // 5
     "limit: 378 N\n"                                                   // 6
     "stiffness: 250 N/mm\n"                                            // 7
-    "breaks: true\n";                                                  // 8
+    "breaks: true\n"                                                   // 8
+    "friction: {coefficient: 0.35, source: walnut.yaml}\n";            // 9
 
 // agents/hand.yaml.
 const std::string kHand =
@@ -262,15 +263,15 @@ TEST(BadInputActee, MisspeltKeySaysDidYouMean) {
 
 TEST(BadInputActee, UnknownKeySaysDidYouMean) {
   const std::string e = actee_error(kWalnut + "stifness: 250 N/mm\n");
-  EXPECT_THAT(e, HasSubstr("bad.yaml:9:1:"));
+  EXPECT_THAT(e, HasSubstr("bad.yaml:10:1:"));
   EXPECT_THAT(e, HasSubstr("found 'stifness' (did you mean 'stiffness'?)"));
 }
 
 TEST(BadInputActee, ExtraKey) {
   const std::string e = actee_error(kWalnut + "colour: brown\n");
-  EXPECT_THAT(e, HasSubstr("bad.yaml:9:1:"));
+  EXPECT_THAT(e, HasSubstr("bad.yaml:10:1:"));
   EXPECT_THAT(e, HasSubstr("expected one of the keys of an actee file (actee, description, shape, "
-                           "mass, force_direction, limit, stiffness, breaks, effects), found 'colour'"));
+                           "mass, force_direction, limit, stiffness, breaks, friction, effects), found 'colour'"));
 }
 
 TEST(BadInputAgent, MisspeltFingerSaysDidYouMean) {
@@ -312,7 +313,7 @@ TEST(BadInputObject, DuplicateKeyInFlowMapping) {
 
 TEST(BadInputActee, DuplicateKey) {
   const std::string e = actee_error(kWalnut + "limit: 400 N\n");
-  EXPECT_THAT(e, HasSubstr("bad.yaml:9:1:"));
+  EXPECT_THAT(e, HasSubstr("bad.yaml:10:1:"));
   EXPECT_THAT(e, HasSubstr("expected each key once in an actee file, found 'limit' again"));
 }
 

@@ -374,7 +374,7 @@ TEST(Effects, EachEffectBelongsToOneKindOfFile) {
               HasSubstr("expected an effect of an actee file, found 'sensor_latency', which belongs in a "
                         "measurement file"));
   EXPECT_THAT(load_error(nut_yaml() + "effects:\n  actee_compliance: {exponent: 50, reference: 1 mm}\n", true),
-              HasSubstr("actee.yaml:10:32: expected a value from 0.1 to 10 (power of the deflection, plain number), "
+              HasSubstr("actee.yaml:11:32: expected a value from 0.1 to 10 (power of the deflection, plain number), "
                         "found '50'"));
   EXPECT_THAT(load_error(t2("effects:\n  spring_preload: {force: 2 N}\n"), false),
               HasSubstr("expected the spring's preload given once, found spring_preload here and a preload of 2 N"));
