@@ -462,10 +462,12 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     }
   }
   // Before naming: can the fitted samples tell the chosen effects from
-  // the other candidates at all? If not, every look-alike set is as good,
-  // and the report says which measurement would separate them.
+  // the other effects at all? If not, every look-alike set is as good,
+  // and the report says which measurement would separate them. Every
+  // effect that applies is asked, also those left out of the library: a
+  // look-alike of what was left out is no more named than any other.
   if (!chosen.empty()) {
-    d.look_alikes = look_alikes(fitter, chosen, library);
+    d.look_alikes = look_alikes(fitter, chosen, applicable);
     if (!d.look_alikes.empty() && d.ambiguous.empty()) d.ambiguous.push_back(chosen);
     for (const LookAlike& l : d.look_alikes) {
       std::vector<EffectKind> set = chosen;
