@@ -7,9 +7,12 @@
 // torque terms, its actee law or the gap library to make data.
 #pragma once
 
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "jaw_contact.h"
 #include "truth.h"
 
 namespace gapcheck {
@@ -19,7 +22,7 @@ enum class DriveShape {
   sine,             // a sine of one period
   uneven_triangle,  // straight ramps, closing for `closing_share` of each period
   ramp_and_hold,    // ramp down, hold, ramp up, hold (each a quarter)
-  smooth_random,    // a sum of sines of random phase up to 3 / period Hz, from `shape_seed`
+  smooth_random,    // a sine whose phase three sines of random phase, up to 3 / period Hz, speed up and slow down (`shape_seed`)
 };
 const char* drive_shape_name(DriveShape s);
 
@@ -35,8 +38,19 @@ struct Drive {
   // back (the hand lets go and the spring reopens the tool unseen): only
   // closing is measured.
   bool closing_only = false;
-  // The servo target at time t (rad): starts at `high`, between low and high.
+  // A crack at the end: the last period closes down to this instead of `low`.
+  std::optional<double> last_low;
+  // The hand's servo on its own hinge, coaxial with the tool's (N*m/rad,
+  // N*m*s/rad): a squeezing drive's is as stiff as the actee.
+  double servo_stiffness = 10, servo_damping = 0.1;
+  bool squeezes = false;      // the drive presses on the actee (else it stays clear of it)
+  unsigned noise_seed = 0;    // the sensors' noise of this trace
+  // The servo target at time t (rad): starts at `high`, between low and high
+  // (last_low in the last period).
   double target(double t) const;
+  // Whether the sample at time t is in the trace: not while a closing-only
+  // stroke's hand has let go.
+  bool measured(double t) const;
 };
 
 // What is between the jaws, and what happens to it.
@@ -74,6 +88,15 @@ struct Outside {
   std::string name() const;      // "backlash", "detent", "sensor_gain", "offset_drift", "viscoelastic_actee"; "" if none
 };
 
+// The hand: a mass at the emphasis on its own hinge, coaxial with the
+// tool's, driven by the drive's servo, pushing the arm through a stiff
+// force sensor (a spring with a little damping) whose force is the effort.
+struct Hand {
+  double mass = 0.05;              // kg, at effort_at
+  double sensor_stiffness = 1e4;   // N*m/rad, about the hinge (the sensor's N/m times effort_at^2)
+  double sensor_damping = 0.01;    // N*m*s/rad
+};
+
 // One case: a tool (its nominal file's numbers, truth.h), the truth beyond
 // the file, the design.
 struct Case {
@@ -85,7 +108,21 @@ struct Case {
   ActeeScenario scenario = ActeeScenario::none;
   std::vector<Drive> drives;   // 1 to 4 traces
   Sensors sensors;
+  Hand hand;
+  unsigned seed = 0;           // the case's seed: everything above is drawn from it
+  // The real actee's stiffness over its shipped file's (a specimen of its
+  // own): what the plates measure and the measurement's actee file says.
+  double actee_specimen = 1;
+  // With an actee: the moving jaw's geoms and the actee's as afford's
+  // exported scene places them (jaw_contact.h), for the realities' scenes.
+  JawScene jaws;
 };
+
+// Draws a case from its seed (std::mt19937): the tool (a shipped one, or a
+// new geometry written into `cases_dir` as an object file), the actee and
+// its scenario, the drives, the sensors, the hand and the truth. SOURCE is
+// the repository (objects/, actees/, agents/).
+Case draw_case(const std::filesystem::path& source, const std::filesystem::path& cases_dir, unsigned seed);
 
 // The label the scorer reads: the true names joined by '+', sorted;
 // "none"; or "outside:NAME".

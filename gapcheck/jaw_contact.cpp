@@ -29,10 +29,9 @@ double extent(const mjModel* m, const mjData* d, int geom, const double n[3]) {
   }
 }
 
-}  // namespace
-
-JawContact jaw_contact(const std::string& object_file, const std::string& actee_file, const std::string& agent_file,
-                       double at_m) {
+// The tool with the actee in its jaws, as a session holds it.
+afford::CompiledSession session_of(const std::string& object_file, const std::string& actee_file,
+                                   const std::string& agent_file, double at_m) {
   const afford::ObjectSpec object = afford::load_object(object_file);
   const afford::ActeeSpec actee = afford::load_actee(actee_file);
   const afford::AgentSpec agent = afford::load_agent(agent_file);
@@ -42,6 +41,53 @@ JawContact jaw_contact(const std::string& object_file, const std::string& actee_
   session.name = "gapcheck-contact-" + object.name + "-" + actee.name;
   session.file = session.name;
   session.model = afford::compile(object, &actee, &agent, options);
+  return session;
+}
+
+SceneGeom scene_geom(const mjModel* m, int geom) {
+  SceneGeom g;
+  g.type = m->geom_type[geom];
+  for (int i = 0; i < 3; ++i) g.size[i] = m->geom_size[3 * geom + i];
+  for (int i = 0; i < 3; ++i) g.pos[i] = m->geom_pos[3 * geom + i];
+  for (int i = 0; i < 4; ++i) g.quat[i] = m->geom_quat[4 * geom + i];
+  return g;
+}
+
+}  // namespace
+
+JawScene jaw_scene(const std::string& object_file, const std::string& actee_file, const std::string& agent_file,
+                   double at_m) {
+  const afford::CompiledSession session = session_of(object_file, actee_file, agent_file, at_m);
+  afford::MujocoScene scene(session);
+  mjModel* m = scene.model();
+  mjData* d = scene.data();
+  mj_forward(m, d);
+  const int arm = mj_name2id(m, mjOBJ_BODY, "moving_arm");
+  const int actee_geom = mj_name2id(m, mjOBJ_GEOM, "actee");
+  JawScene out;
+  // The moving arm's body frame is the arm's frame (its joint's ref is
+  // the rest angle, at which the body's quat puts it).
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_bodyid[g] == arm) out.moving.push_back(scene_geom(m, g));
+  }
+  // The actee's geom in the tool's frame: its world pose taken into it.
+  const int tool = mj_name2id(m, mjOBJ_BODY, "tool");
+  SceneGeom a = scene_geom(m, actee_geom);
+  const double* x = d->geom_xpos + 3 * actee_geom;
+  const double* origin = d->xpos + 3 * tool;
+  const double offset[3] = {x[0] - origin[0], x[1] - origin[1], x[2] - origin[2]};
+  mju_mulMatTVec(a.pos, d->xmat + 9 * tool, offset, 3, 3);
+  double geom_quat[4], tool_inverse[4];
+  mju_mat2Quat(geom_quat, d->geom_xmat + 9 * actee_geom);
+  mju_negQuat(tool_inverse, d->xquat + 4 * tool);
+  mju_mulQuat(a.quat, tool_inverse, geom_quat);
+  out.actee = a;
+  return out;
+}
+
+JawContact jaw_contact(const std::string& object_file, const std::string& actee_file, const std::string& agent_file,
+                       double at_m) {
+  const afford::CompiledSession session = session_of(object_file, actee_file, agent_file, at_m);
   afford::MujocoScene scene(session);
   mjModel* m = scene.model();
   mjData* d = scene.data();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace gapcheck {
 
@@ -20,5 +21,25 @@ struct JawContact {
 // a box.
 JawContact jaw_contact(const std::string& object_file, const std::string& actee_file, const std::string& agent_file,
                        double at_m);
+
+// A geom as MuJoCo holds it (mjtGeom, its size, its pose in a frame).
+struct SceneGeom {
+  int type = 0;
+  double size[3] = {0, 0, 0};
+  double pos[3] = {0, 0, 0};    // m
+  double quat[4] = {1, 0, 0, 0};
+};
+
+// The jaws and the actee as afford's exported scene places them: the
+// moving arm's geoms in the arm's frame (the hinge is its z axis through
+// its origin, at angle 0 the arm lies along the fixed one), the actee's in
+// the tool's frame. The realities build their own scenes from these, so
+// that the jaws touch the actee where jaw_contact finds it.
+struct JawScene {
+  std::vector<SceneGeom> moving;
+  SceneGeom actee;
+};
+JawScene jaw_scene(const std::string& object_file, const std::string& actee_file, const std::string& agent_file,
+                   double at_m);
 
 }  // namespace gapcheck

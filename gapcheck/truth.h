@@ -1,8 +1,8 @@
-// The withheld check of `afford gap`: MuJoCo plays the real tool. This
-// folder's code never calls afford's solver, its torque terms or the gap
-// library while it makes data; it reads the nominal tool files for their
-// numbers only. Labels are written apart from the traces and read by the
-// scorer after the diagnosis.
+// The withheld check of `afford gap`: a physics engine plays the real tool
+// (reality.h). This folder's code never calls afford's solver, its torque
+// terms, its actee law or the gap library while it makes data; it reads the
+// nominal tool and actee files for their numbers only. Labels are written
+// apart from the traces and read by the scorer after the diagnosis.
 #pragma once
 
 #include <optional>
@@ -20,11 +20,10 @@ struct Truth {
   double inertia = 0;      // kg*m^2, the arm's inertia about the pivot
   double weight = 0;       // N*m, the arm's weight torque amplitude (pivot axis level)
   double latency = 0;      // s, the effort sensor's delay
-  // The actee's law: F = K r (d / r)^n with r = limit / K (the linear law's
-  // deflection at the limit, where both give the limit). 0: its file's
-  // linear law, F = K d. Either way times h / (h - d), h its thickness
-  // across the jaws (actees/README.md: what is left when it is squeezed
-  // flat cannot be squeezed).
+  // The real actee's law, a power of its deflection: F = K r (d / r)^n with
+  // r = limit / K (where both give the limit). 0: linear, F = K d. Either
+  // way times h / (h - d), h its thickness across the jaws (what is left
+  // when it is squeezed flat cannot be squeezed). K is the specimen's.
   double actee_exponent = 0;
   std::vector<std::string> names() const;  // the afford effect names of what is non-zero
 };
@@ -55,28 +54,5 @@ struct Tool {
   int effort_sign = 1;       // -1: on the handle side of a type 1 lever
   std::optional<ToolActee> actee;  // measured with an actee in its jaws
 };
-
-// One drive of the emphasis: the arm's angle against time.
-struct Profile {
-  std::string name;  // "sine-slow", ...
-  double period = 0; // s
-  bool triangle = false;
-  double seconds = 0;
-  double turned = 0;  // rad, the tool turned about its hinge (gravity turns with it)
-  // With an actee: how far past the contact the drive squeezes, in
-  // multiples of the file's deflection at the limit (limit / stiffness);
-  // 0: a free drive, clear of the actee.
-  double squeeze = 0;
-};
-
-struct Sample {
-  double t, angle, effort, actee;
-  bool broken;
-};
-
-// Runs MuJoCo on the tool with the truth along the profile; 1 kHz samples
-// with the sensors' noise (effort 0.02 N, angle 1e-4 rad, actee 0.1 N;
-// fixed seed) and quantisation.
-std::vector<Sample> simulate(const Tool& tool, const Truth& truth, const Profile& profile, unsigned seed);
 
 }  // namespace gapcheck

@@ -8,7 +8,7 @@ packages=(
   build-essential cmake pkg-config ninja-build
   libeigen3-dev libfcl-dev libccd-dev libyaml-cpp-dev
   libglm-dev libosmesa6-dev zlib1g-dev libdeflate-dev libusb-1.0-0-dev umockdev libumockdev-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libode-dev
   libcli11-dev help2man
   nlohmann-json3-dev python3-jsonschema python3-yaml parallel
   clang-14 libclang-rt-14-dev

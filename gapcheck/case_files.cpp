@@ -1,0 +1,81 @@
+#include "case_files.h"
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace gapcheck {
+namespace {
+
+// The shipped actee file with its stiffness replaced by the plates' (every
+// other line as it was).
+void write_actee(const fs::path& shipped, const fs::path& to, double stiffness) {
+  std::ifstream in(shipped);
+  if (!in) throw std::runtime_error("gapcheck: cannot read " + shipped.string());
+  std::ofstream o(to);
+  std::string line;
+  bool replaced = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("stiffness:", 0) == 0) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "stiffness: %.9g N/m", stiffness);
+      line = buf;
+      replaced = true;
+    }
+    o << line << "\n";
+  }
+  if (!replaced) throw std::runtime_error("gapcheck: " + shipped.string() + " has no stiffness line");
+}
+
+}  // namespace
+
+fs::path write_case(const fs::path& out, const Case& c, const std::vector<std::vector<Measured>>& traces,
+                    const std::optional<PlatesLaw>& plates) {
+  const fs::path dir = out / "cases";
+  const bool actee = c.tool.actee.has_value();
+  std::string list;
+  for (size_t k = 0; k < traces.size(); ++k) {
+    const std::string file = c.name + "-" + std::to_string(k + 1) + ".csv";
+    std::ofstream csv(dir / file);
+    csv << (actee ? "t,angle,effort_force,actee_force,broken\n" : "t,angle,effort_force,actee_force\n");
+    for (const Measured& s : traces[k]) {
+      if (!c.drives[k].measured(s.t)) continue;
+      char row[160];
+      if (actee) {
+        std::snprintf(row, sizeof row, "%.3f,%.7f,%.6f,%.4f,%d\n", s.t, s.angle, s.effort, s.actee, s.broken ? 1 : 0);
+      } else {
+        std::snprintf(row, sizeof row, "%.3f,%.7f,%.6f,%.4f\n", s.t, s.angle, s.effort, s.actee);
+      }
+      csv << row;
+    }
+    const double turned_deg = c.drives[k].turned * 180 / 3.14159265358979323846;
+    char entry[200];
+    if (turned_deg != 0) {
+      std::snprintf(entry, sizeof entry, "{file: %s, turned: %.6g deg}", file.c_str(), turned_deg);
+    } else {
+      std::snprintf(entry, sizeof entry, "%s", file.c_str());
+    }
+    list += (list.empty() ? "" : ", ") + std::string(entry);
+  }
+  const fs::path yaml = dir / (c.name + ".yaml");
+  std::ofstream m(yaml);
+  char line[256];
+  m << "measurement: " << c.name << "\nobject: " << c.tool.file << "\n";
+  std::snprintf(line, sizeof line, "effort_at: %.9g mm\n", c.tool.effort_sign * c.tool.effort_at * 1000);
+  m << line;
+  if (actee) {
+    if (!plates) throw std::runtime_error(c.name + ": an actee without its plates' measurement");
+    const std::string file = c.name + "-actee.yaml";
+    write_actee(c.tool.actee->file, dir / file, plates->stiffness);
+    std::snprintf(line, sizeof line, "actee: {file: %s, at: %.9g mm}\n", file.c_str(), c.tool.actee->at * 1000);
+    m << line;
+  }
+  m << "traces: [" << list << "]\n";
+  std::ofstream(out / "labels" / (c.name + ".txt")) << label_of(c) << "\n";
+  return yaml;
+}
+
+}  // namespace gapcheck

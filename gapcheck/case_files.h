@@ -1,0 +1,19 @@
+// A played case on disk: OUT/cases/NAME.yaml (the measurement file of
+// gap/README.md), its traces NAME-K.csv, the actee's file as the plates
+// measured it (NAME-actee.yaml) and, apart, OUT/labels/NAME.txt.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "design.h"
+#include "reality.h"
+
+namespace gapcheck {
+
+// Returns the measurement file's path.
+std::filesystem::path write_case(const std::filesystem::path& out, const Case& c,
+                                 const std::vector<std::vector<Measured>>& traces, const std::optional<PlatesLaw>& plates);
+
+}  // namespace gapcheck

@@ -1,0 +1,396 @@
+// Drawing a case: every choice from one std::mt19937 seeded by the case's
+// seed, so that a seed names its case.
+#include "design.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <random>
+#include <stdexcept>
+
+#include "tools.h"
+
+namespace fs = std::filesystem;
+
+namespace gapcheck {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kClosingStroke = 0.85;  // of a closing-only stroke's period, the closing
+using Rng = std::mt19937;
+
+double uniform(Rng& r, double a, double b) { return std::uniform_real_distribution<double>(a, b)(r); }
+double log_uniform(Rng& r, double a, double b) { return std::exp(uniform(r, std::log(a), std::log(b))); }
+int integer(Rng& r, int a, int b) { return std::uniform_int_distribution<int>(a, b)(r); }
+bool chance(Rng& r, double p) { return uniform(r, 0, 1) < p; }
+
+// A cheap deterministic stream for the smooth random shape: target() is
+// called at every engine step, too often to seed an mt19937.
+double splitmix(uint64_t& state) {
+  uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) / 9007199254740992.0;  // [0, 1)
+}
+
+// The smooth random shape's phase (rad) at time t: a sine's, 2 pi t /
+// period, sped up and slowed down by three sines of random phase at 1, 2
+// and 3 / period Hz. Their amplitudes keep the phase increasing (the sum
+// of k a_k is at most 0.8), so every period still reaches high and low.
+double warped_phase(unsigned seed, double period, double t) {
+  uint64_t state = seed;
+  double phase = 2 * kPi * t / period;
+  double budget = 0.8;
+  for (int k = 1; k <= 3; ++k) {
+    const double a = budget * splitmix(state) / k;
+    const double start = 2 * kPi * splitmix(state);
+    phase += a * (std::sin(2 * kPi * k * t / period + start) - std::sin(start));
+    budget -= k * a;
+  }
+  return phase;
+}
+
+}  // namespace
+
+const char* drive_shape_name(DriveShape s) {
+  switch (s) {
+    case DriveShape::sine: return "sine";
+    case DriveShape::uneven_triangle: return "uneven_triangle";
+    case DriveShape::ramp_and_hold: return "ramp_and_hold";
+    case DriveShape::smooth_random: return "smooth_random";
+  }
+  return "?";
+}
+
+const char* actee_scenario_name(ActeeScenario s) {
+  switch (s) {
+    case ActeeScenario::none: return "no_actee";
+    case ActeeScenario::light_squeeze: return "light_squeeze";
+    case ActeeScenario::crack_first_cycle: return "crack_first_cycle";
+    case ActeeScenario::crack_at_end: return "crack_at_end";
+    case ActeeScenario::closing_only: return "closing_only";
+  }
+  return "?";
+}
+
+double Drive::target(double t) const {
+  const double cycles = std::max(1.0, std::round(seconds / period));
+  const double phase = shape == DriveShape::smooth_random && !closing_only ? warped_phase(shape_seed, period, t) / (2 * kPi)
+                                                                          : t / period;  // periods
+  const double k = std::floor(phase);
+  const double p = phase - k;
+  const double lo = last_low && k >= cycles - 1 ? *last_low : low;
+  double s = 0;  // 0 at high, 1 at lo
+  if (closing_only) {
+    // A closing stroke over most of the period (a half cosine: the hand
+    // speeds up and slows down), then the hand lets go and is back at the
+    // top quickly (a half cosine too, not a step the servo could not
+    // follow), unseen (measured()).
+    s = p < kClosingStroke ? 0.5 * (1 - std::cos(kPi * p / kClosingStroke))
+                           : 0.5 * (1 + std::cos(kPi * (p - kClosingStroke) / (1 - kClosingStroke)));
+  } else {
+    switch (shape) {
+      case DriveShape::sine:
+      case DriveShape::smooth_random: s = 0.5 * (1 - std::cos(2 * kPi * p)); break;
+      case DriveShape::uneven_triangle: s = p < closing_share ? p / closing_share : (1 - p) / (1 - closing_share); break;
+      case DriveShape::ramp_and_hold: s = p < 0.25 ? 4 * p : p < 0.5 ? 1.0 : p < 0.75 ? 3 - 4 * p : 0.0; break;
+    }
+  }
+  return high - (high - lo) * s;
+}
+
+bool Drive::measured(double t) const {
+  if (!closing_only) return true;
+  const double p = t / period - std::floor(t / period);
+  return p < kClosingStroke;
+}
+
+bool Outside::any() const { return !name().empty(); }
+
+std::string Outside::name() const {
+  if (backlash != 0) return "backlash";
+  if (detent_torque != 0) return "detent";
+  if (gain_error != 0) return "sensor_gain";
+  if (offset_drift != 0) return "offset_drift";
+  if (viscoelastic_share != 0) return "viscoelastic_actee";
+  return "";
+}
+
+std::string label_of(const Case& c) {
+  if (c.outside.any()) return "outside:" + c.outside.name();
+  std::vector<std::string> names = c.truth.names();
+  std::sort(names.begin(), names.end());
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : "+") + n;
+  return s.empty() ? "none" : s;
+}
+
+namespace {
+
+// The drives' motion, for sizing the effects: the target's RMS rate and
+// acceleration over every drive (rad/s, rad/s^2) and its lowest angle
+// (rad). Differences over 25 ms, the half-width over which the diagnosis
+// differentiates the angle, which the hand's servo (8 to 20 Hz) rounds a
+// triangle's corners to as well: a 1 ms stencil would put the whole
+// change of speed into one sample and size an inertia on spikes that
+// neither the arm nor the diagnosis sees.
+struct Motion {
+  double rate = 0, acceleration = 0, lowest = 1e9;
+};
+Motion motion_of(const std::vector<Drive>& drives) {
+  Motion m;
+  constexpr double h = 2.5e-2;  // s
+  double v2 = 0, a2 = 0;
+  int n = 0;
+  for (const Drive& d : drives) {
+    for (double t = h; t < d.seconds - h; t += 1e-3) {
+      if (!d.measured(t - h) || !d.measured(t + h)) continue;  // what is not in the trace does not size an effect
+      ++n;
+      const double before = d.target(t - h), now = d.target(t), after = d.target(t + h);
+      v2 += std::pow((after - before) / (2 * h), 2);
+      a2 += std::pow((after - 2 * now + before) / (h * h), 2);
+      m.lowest = std::min(m.lowest, now);
+    }
+  }
+  m.rate = std::sqrt(v2 / std::max(1, n));
+  m.acceleration = std::sqrt(a2 / std::max(1, n));
+  return m;
+}
+
+// The exponent n of a power law F = L (x / X)^n (L the limit, X its
+// deflection) whose misfit against the straight line a plates test fits
+// to it up to the limit (stiffness 3 L / ((n + 2) X), least squares
+// through 0), RMS over the drives' squeeze up to `depth` X and read at the
+// effort (times lever / effort_at), is `goal` N.
+double exponent_for(double goal, double limit, double depth, double lever, double effort_at) {
+  auto misfit = [&](double n) {
+    double sum = 0;
+    constexpr int kPoints = 200;
+    for (int i = 1; i <= kPoints; ++i) {
+      const double x = depth * i / kPoints;  // in limits' deflections
+      sum += std::pow(limit * (std::pow(x, n) - 3 * x / (n + 2)) * lever / effort_at, 2);
+    }
+    return std::sqrt(sum / kPoints);
+  };
+  double lo = 1.0, hi = 4.0;
+  if (misfit(hi) < goal) return hi;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (misfit(mid) < goal ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+enum class Effect { friction, damping, preload, cubic, inertia, weight, latency, actee };
+
+}  // namespace
+
+Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed) {
+  Rng rng(seed);
+  Case c;
+  c.seed = seed;
+  char stem[32];
+  std::snprintf(stem, sizeof stem, "s%07u", seed);
+
+  // The tool: one of the shipped three or a new geometry.
+  const std::string tool = tool_names()[static_cast<size_t>(integer(rng, 0, static_cast<int>(tool_names().size()) - 1))];
+  c.name = std::string(stem) + "-" + tool;
+  c.tool = load_tool(tool_file(source, cases_dir, c.name + "-object", tool));
+  const double span = c.tool.theta_max - c.tool.theta_min;  // rad
+  const double b = c.tool.effort_at;                         // m
+
+  // What is in the jaws.
+  const std::vector<ActeePlace> places = actee_places(tool);
+  const double r = uniform(rng, 0, 1);
+  c.scenario = places.empty() || r < 0.25 ? (chance(rng, 0.6) ? ActeeScenario::none : ActeeScenario::closing_only)
+               : r < 0.55                 ? ActeeScenario::light_squeeze
+               : r < 0.8                  ? ActeeScenario::crack_first_cycle
+                                          : ActeeScenario::crack_at_end;
+  const bool squeezing = c.scenario != ActeeScenario::none && c.scenario != ActeeScenario::closing_only;
+  if (squeezing) {
+    const ActeePlace place = places[static_cast<size_t>(integer(rng, 0, static_cast<int>(places.size()) - 1))];
+    c.tool = with_actee(c.tool, source, place);
+    c.jaws = jaw_scene(c.tool.file, c.tool.actee->file, (source / "agents" / "hand.yaml").string(), place.at);
+    // One that deforms and never breaks is only squeezed.
+    if (!c.tool.actee->breaks) c.scenario = ActeeScenario::light_squeeze;
+    c.actee_specimen = uniform(rng, 0.85, 1.2);
+    const double room = (c.tool.theta_max - c.tool.actee->contact_angle) / span;
+    if (room < 0.3 || c.tool.actee->contact_angle < c.tool.theta_min + 0.15 * span) {
+      throw std::runtime_error(c.name + ": the jaws touch the " + place.actee + " at " +
+                               std::to_string(c.tool.actee->contact_angle) + " rad, leaving no room for a free drive");
+    }
+  }
+
+  // The sensors.
+  c.sensors.effort_noise = log_uniform(rng, 0.02, 0.2);
+  c.sensors.angle_noise = log_uniform(rng, 1e-4, 5e-4);
+  c.sensors.actee_noise = 0.1;
+  if (chance(rng, 0.5)) {
+    c.sensors.effort_quantum = c.sensors.effort_noise * uniform(rng, 0.1, 0.5);
+    c.sensors.angle_quantum = c.sensors.angle_noise * uniform(rng, 0.1, 0.5);
+    c.sensors.actee_quantum = 0.01;
+  }
+
+  // The hand: a mass at the emphasis; its servo rings at 8 to 20 Hz on a
+  // free drive (at least ten times as stiff as the tool's spring).
+  c.hand.mass = uniform(rng, 0.03, 0.1);
+  const double hand_inertia = c.hand.mass * b * b;  // kg*m^2
+  const double free_kp = std::max(hand_inertia * std::pow(2 * kPi * uniform(rng, 8, 20), 2), 10 * c.tool.torsion);
+  const double free_kv = 2 * uniform(rng, 0.5, 1.0) * std::sqrt(free_kp * hand_inertia);
+  double actee_rotational = 0;  // N*m/rad, the specimen's stiffness about the hinge
+  if (c.tool.actee) {
+    const ToolActee& a = *c.tool.actee;
+    actee_rotational = a.stiffness * c.actee_specimen * a.lever * a.lever;
+  }
+  c.hand.sensor_stiffness = std::max(10 * free_kp, 2 * actee_rotational);
+
+  // The drives.
+  const int traces = integer(rng, 1, 4);
+  const bool several_turns = traces >= 2 && chance(rng, 0.5);
+  const double turns[] = {0, 0.5 * kPi, kPi, -0.5 * kPi};
+  const double one_turn = turns[integer(rng, 0, 3)];
+  for (int i = 0; i < traces; ++i) {
+    Drive d;
+    d.period = log_uniform(rng, 0.3, 5);
+    const double cycles = std::clamp(std::ceil(3 / d.period), 2.0, std::max(2.0, std::floor(10 / d.period)));
+    d.seconds = cycles * d.period;
+    d.shape = static_cast<DriveShape>(integer(rng, 0, 3));
+    d.closing_share = uniform(rng, 0.2, 0.8);
+    d.shape_seed = static_cast<unsigned>(rng());
+    d.noise_seed = static_cast<unsigned>(rng());
+    d.turned = several_turns ? (i < 2 ? turns[i == 0 ? 0 : integer(rng, 1, 3)] : turns[integer(rng, 0, 3)]) : one_turn;
+    d.closing_only = c.scenario == ActeeScenario::closing_only;
+    d.servo_stiffness = free_kp;
+    d.servo_damping = free_kv;
+    d.high = c.tool.theta_max - uniform(rng, 0.08, 0.2) * span;
+    d.low = c.tool.theta_min + uniform(rng, 0.05, 0.25) * span;
+    if (c.tool.actee) {
+      const ToolActee& a = *c.tool.actee;
+      const double clear = a.contact_angle + 0.08 * span;
+      // The first drive follows the scenario; the others squeeze alike or
+      // stay clear of the actee.
+      d.squeezes = i == 0 || chance(rng, 0.5);
+      if (!d.squeezes) {
+        d.low = clear;
+        d.high = std::max(d.high, clear + 0.15 * span);
+      } else {
+        // Down to a share of the limit: the specimen's deflection, the
+        // hand's servo and the sensor giving way, against the spring too.
+        const double k = a.stiffness * c.actee_specimen;  // N/m
+        d.servo_stiffness = std::max(free_kp, actee_rotational);
+        d.servo_damping = 2 * std::sqrt(d.servo_stiffness * hand_inertia);
+        auto low_for = [&](double share) {
+          const double force = share * a.limit;  // N
+          const double torque = force * a.lever + c.tool.preload_torque + c.tool.torsion * (c.tool.rest - a.contact_angle);
+          return a.contact_angle - force / (k * a.lever) - torque / d.servo_stiffness - torque / c.hand.sensor_stiffness;
+        };
+        constexpr double kCrack = 1.8;  // of the limit: past it whatever the law and the viscous share
+        d.high = clear;
+        if (c.scenario == ActeeScenario::light_squeeze) d.low = low_for(uniform(rng, 0.3, 0.65));
+        if (c.scenario == ActeeScenario::crack_first_cycle) d.low = low_for(kCrack);
+        if (c.scenario == ActeeScenario::crack_at_end) {
+          d.low = low_for(uniform(rng, 0.3, 0.6));
+          d.last_low = low_for(kCrack);
+        }
+      }
+    }
+    c.drives.push_back(d);
+  }
+  c.group = actee_scenario_name(c.scenario);
+  if (several_turns) c.group += "+turned";
+
+  // What the real tool has beyond its file: nothing (a fifth), one effect
+  // outside the library (15 %), or one or two of the library's, each 2 to
+  // 10 times the noise floor (the effort sensor's noise, as a torque at
+  // the emphasis, or as a force where it is read as one).
+  const double noise = c.sensors.effort_noise;  // N
+  const double floor = noise * b;               // N*m
+  const Motion motion = motion_of(c.drives);
+  // The sensor damped near critically against the arm (kMinInertia of the
+  // realities and the hidden inertia): a sensor that rang at a few hundred
+  // hertz would leave a ringing that no effect of the library models.
+  auto damp_sensor = [&c] { c.hand.sensor_damping = 1.4 * std::sqrt(c.hand.sensor_stiffness * (1e-6 + c.truth.inertia)); };
+  const double kind = uniform(rng, 0, 1);
+  if (kind < 0.2) {
+    damp_sensor();
+    return c;
+  }
+  if (kind < 0.35) {
+    const double size = uniform(rng, 2, 10);
+    const int outside = integer(rng, 0, squeezing ? 4 : 3);
+    const Drive& first = c.drives.front();
+    const double top = first.high;
+    const double bottom = c.tool.actee ? c.tool.actee->contact_angle : first.low;
+    switch (outside) {
+      case 0:  // the spring turns once the arm has taken up the play
+        c.outside.backlash = std::min(2 * size * floor / c.tool.torsion, 0.2 * (top - bottom));
+        break;
+      case 1:
+        c.outside.detent_torque = size * floor;
+        c.outside.detent_angle = bottom + uniform(rng, 0.3, 0.7) * (top - bottom);
+        c.outside.detent_width = uniform(rng, 0.08, 0.2) * (top - bottom);
+        break;
+      case 2: {
+        // Against the effort the nominal spring needs half-way through the drive.
+        const double effort = (c.tool.preload_torque + c.tool.torsion * (c.tool.rest - 0.5 * (top + bottom))) / b;
+        c.outside.gain_error = (chance(rng, 0.5) ? 1 : -1) * std::min(0.2, size * noise / std::max(effort, 1e-6));
+        break;
+      }
+      case 3: c.outside.offset_drift = (chance(rng, 0.5) ? 1 : -1) * size * noise / first.seconds; break;
+      default:
+        c.outside.viscoelastic_share = uniform(rng, 0.15, 0.4);
+        c.outside.viscoelastic_tau = uniform(rng, 0.1, 1.0);
+        break;
+    }
+    damp_sensor();
+    return c;
+  }
+  std::vector<Effect> library = {Effect::friction, Effect::damping, Effect::preload, Effect::cubic,
+                                 Effect::inertia,  Effect::weight,  Effect::latency};
+  if (squeezing) library.push_back(Effect::actee);
+  std::shuffle(library.begin(), library.end(), rng);
+  const int count = kind < 0.675 ? 1 : 2;
+  for (int i = 0; i < count; ++i) {
+    const double size = uniform(rng, 2, 10);
+    const double torque = size * floor;  // N*m
+    switch (library[static_cast<size_t>(i)]) {
+      case Effect::friction: c.truth.friction = torque; break;
+      case Effect::damping: c.truth.damping = torque / motion.rate; break;
+      case Effect::preload:  // less of it at most by 0.8 of the file's
+        c.truth.preload = chance(rng, 0.5) ? torque : -std::min(torque, 0.8 * c.tool.preload_torque);
+        break;
+      case Effect::cubic: {
+        // At the deepest the drives close the spring (its compression, m).
+        const double deepest = c.tool.spring_position * (c.tool.rest - motion.lowest) +
+                               c.tool.preload_torque / c.tool.torsion * c.tool.spring_position;
+        c.truth.cubic = torque / (c.tool.spring_position * std::pow(deepest, 3));
+        break;
+      }
+      case Effect::inertia:
+        // At most a heavy hand tool's arm (270 g at 90 mm is 2e-3 kg*m^2):
+        // slow drives would otherwise ask for a flywheel.
+        c.truth.inertia = std::min(torque / motion.acceleration, 2e-3);
+        break;
+      case Effect::weight: c.truth.weight = torque; break;
+      case Effect::latency:
+        // The effort's rate through the spring, N/s.
+        c.truth.latency = std::clamp(size * noise / (c.tool.torsion * motion.rate / b), 0.002, 0.05);
+        break;
+      case Effect::actee: {
+        const ToolActee& a = *c.tool.actee;
+        // In the contact the angle's noise passes into the effort through
+        // the actee's stiffness: that is the floor there.
+        const double contact_floor = std::hypot(noise, c.sensors.angle_noise * actee_rotational / b);
+        const double depth = c.scenario == ActeeScenario::light_squeeze ? 0.5 : 1.0;
+        c.truth.actee_exponent = exponent_for(size * contact_floor, a.limit, depth, a.lever, b);
+        break;
+      }
+    }
+  }
+  damp_sensor();
+  return c;
+}
+
+}  // namespace gapcheck
