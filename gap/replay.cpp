@@ -17,6 +17,7 @@ constexpr double kSignWidth = 1e-3;      // rad/s: friction's sign turns over th
 constexpr double kHeldBand = 0.1;        // friction's band below this share of a sample's noise does not matter
 constexpr double kUnresolved = 2;        // a window's misfit this many times its noise's: the motion is not resolved
 constexpr double kDropTime = 0.02;       // s: a crack drops the actee's force within this
+constexpr double kGapSteps = 10;         // a step this many times the mean is a time gap: a stretch not recorded
 
 // x, its rate and acceleration, and their noise (white_noise), no finer
 // than the printed `resolution` (rad or m), which a noise-free trace
@@ -104,6 +105,14 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
   const double still = std::max({1e-9, 0.01 * peak, 3 * r.rate_noise});
   r.phase.assign(n, Phase::at_rest);
   r.fitted.assign(n, true);
+  // Within `edge` samples of a time gap (closing-only strokes whose return
+  // was not recorded) the rates are one-sided, as at the trace's ends.
+  std::vector<bool> near_gap(n, false);
+  const double gap = kGapSteps * (r.t.back() - r.t.front()) / static_cast<double>(std::max<size_t>(1, n - 1));
+  for (size_t i = 1; i < n; ++i) {
+    if (r.t[i] - r.t[i - 1] <= gap) continue;
+    for (size_t j = i >= edge ? i - edge : 0; j < std::min(n, i + edge); ++j) near_gap[j] = true;
+  }
   int last_sign = 0;
   std::vector<size_t> turns;
   for (size_t i = 0; i < n; ++i) {
@@ -144,7 +153,8 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
     // do not resolve, and friction at rest and while it turns over at a
     // reversal are outside what the model predicts from the motion:
     // reported, not fitted or scored.
-    r.fitted[i] = !at_limit[i] && !broken[i] && !blurred[i] && (moving || held) && i >= edge && i + edge < n;
+    r.fitted[i] = !at_limit[i] && !broken[i] && !blurred[i] && (moving || held) && i >= edge && i + edge < n &&
+                  !near_gap[i];
   }
 }
 
@@ -160,15 +170,21 @@ double value_at(const std::vector<double>& t, const std::vector<double>& y, doub
 
 std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay) {
   if (delay == 0) return y;
-  // value_at at every t[i] - delay, in one walk: those times increase with i.
+  // value_at at every t[i] - delay, in one walk: those times increase with
+  // i. A sensor's memory starts again after a time gap (a stretch not
+  // recorded): there, as at the trace's start, the first value is held.
   std::vector<double> out(y.size());
-  size_t j = 1;  // the first sample later than the time asked for, once inside
+  const double gap = kGapSteps * (t.back() - t.front()) / static_cast<double>(std::max<size_t>(1, t.size() - 1));
+  size_t j = 1;      // the first sample later than the time asked for, once inside
+  size_t start = 0;  // the first sample of the stretch sample i is in
   for (size_t i = 0; i < y.size(); ++i) {
+    if (i > 0 && t[i] - t[i - 1] > gap) start = i;
     const double at = t[i] - delay;
-    if (at <= t.front() || at >= t.back()) {
-      out[i] = at <= t.front() ? y.front() : y.back();
+    if (at <= t[start] || at >= t.back()) {
+      out[i] = at <= t[start] ? y[start] : y.back();
       continue;
     }
+    j = std::max(j, start + 1);
     while (t[j] <= at) ++j;
     const double w = (at - t[j - 1]) / (t[j] - t[j - 1]);
     out[i] = (1 - w) * y[j - 1] + w * y[j];
