@@ -11,7 +11,6 @@
 namespace afford {
 namespace {
 
-constexpr double kMaxDelay = 0.1;                // s, the longest sensor delay searched
 constexpr double kMinExponent = 0.5, kMaxExponent = 4.0;  // the actee's power laws searched
 constexpr int kMaxRounds = 5;   // of the alternating search for a delay and an exponent together
 
@@ -370,7 +369,7 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set) const {
     return minimise([&](double e) { return train_rss(Nonlinear{delay, e}); }, kMinExponent, kMaxExponent, 35);
   };
   auto best_delay = [&](double exponent) {
-    return minimise([&](double d) { return train_rss(Nonlinear{d, exponent}); }, 0.0, kMaxDelay, 50);
+    return minimise([&](double d) { return train_rss(Nonlinear{d, exponent}); }, 0.0, kLongestDelay, 50);
   };
   if (compliance) best.exponent = best_exponent(0.0);
   // Both at once: one, then the other, until neither moves (they trade

@@ -295,14 +295,18 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
     const double effort_noise = std::max(white_noise(effort), r.resolution);
     const std::vector<bool> blurred = unresolved(d, r, effort, effort_noise, r.break_at);
     // The snap as the actee gives way lasts until the polynomial follows
-    // the motion again over a whole window (and a late sensor has caught up).
+    // the motion again over a whole window, and then as long again as a
+    // late sensor may read it: the measurement's own delay and the longest
+    // a fit searches.
     std::vector<bool> snap(n, false);
     if (r.break_at != SIZE_MAX) {
       const size_t window = 2 * d.half_width + 1;
       size_t calm = 0;  // resolved samples in a row
+      double settled = -1;  // s, when the motion settled
       for (size_t i = r.break_at; i < n; ++i) {
         calm = blurred[i] ? 0 : calm + 1;
-        if (calm >= window && r.t[i] - r.t[r.break_at] >= model.sensor_latency) break;
+        if (settled < 0 && calm >= window) settled = r.t[i];
+        if (settled >= 0 && r.t[i] - settled >= model.sensor_latency + kLongestDelay) break;
         snap[i] = true;
       }
     }

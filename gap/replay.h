@@ -55,6 +55,10 @@ struct Replay {
   double to_newtons = 1;         // 1 / lever arm (lever) or 1: main signal to N at the effort
 };
 
+// s: the longest sensor delay a fit searches; the snap as an actee breaks
+// is left out that much longer, since a late sensor reads it then.
+inline constexpr double kLongestDelay = 0.1;
+
 // Replays every trace of a lever measurement through `model` (compiled from
 // it, with or without candidate effects switched on).
 std::vector<Replay> replay_lever(const Model& model, const Measurement& m);

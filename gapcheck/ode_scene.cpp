@@ -17,6 +17,9 @@ constexpr double kMinInertia = 1e-6;
 constexpr double kMasslessArm = 1e-5;
 // m: the hand's own size (a sphere's radius), for its inertia about itself.
 constexpr double kHandRadius = 0.01;
+// m: the radius of the actee's sphere in the jaws (ToolScene): a point
+// contact against the jaw's face.
+constexpr double kContactRadius = 2e-4;
 // rad: the hinge's stops, outside the tool's range (the drives stay inside).
 constexpr double kStopMargin = 0.2;
 
@@ -133,16 +136,28 @@ ToolScene::ToolScene(const Case& c, const Drive& drive, double step) {
   dJointSetHingeParam(sensor, dParamStopCFM, 1 / (k * step + kd));
   dJointSetHingeParam(sensor, dParamBounce, 0);
 
-  // The actee: a sphere of its thickness across the jaws, fixed where the
-  // moving jaw's face (a line through the hinge) first touches it at the
-  // contact angle, at the lever arm from the hinge; the jaw a box on the
-  // arm whose lower face is that line.
+  // The actee: a sphere fixed where the moving jaw's face (a line through
+  // the hinge) first touches it at the contact angle, at the lever arm
+  // from the hinge; the jaw a box on the arm whose lower face is that
+  // line. The sphere is small (kContactRadius), not the actee's size: a
+  // flat face turning about the hinge onto a sphere of radius r rolls its
+  // contact point out along the face by r sin(delta) and deepens it by
+  // r (1 - cos(delta)) at a squeeze of delta rad, a moment arm growing
+  // with the squeeze (0.2 to 0.3 % of the actee's torque at a hazelnut's
+  // limit, up to 0.6 N at the effort) that afford's law and the labels do
+  // not have: with a point-like contact the moment arm stays the lever
+  // jaw_contact found and the depth is lever sin(delta) (within 1e-4 of
+  // both at a crack). ODE's sphere-box contact stays the face's normal
+  // when the sphere's centre is inside the box, so the box is deep
+  // enough for any squeeze (ten times the linear law's deflection at the
+  // limit), and as long and wide as the actee.
   if (tool.actee) {
     const ToolActee& a = *tool.actee;
-    const double r = 0.5 * a.thickness, lever = a.lever, tc = a.contact_angle;
+    const double r = kContactRadius, size = 0.5 * a.thickness, lever = a.lever, tc = a.contact_angle;
     actee = dCreateSphere(nullptr, r);
     dGeomSetPosition(actee, lever * std::cos(tc) + r * std::sin(tc), lever * std::sin(tc) - r * std::cos(tc), 0);
-    const double length = 4 * r, depth = std::max(r, 0.005), width = 4 * r;
+    const double squeeze = 10 * a.limit / (c.actee_specimen * a.stiffness);  // m
+    const double length = 4 * size, depth = std::max({size, 0.005, 2 * squeeze}), width = 4 * size;
     jaw = dCreateBox(nullptr, length, depth, width);
     dGeomSetBody(jaw, arm);
     dGeomSetOffsetPosition(jaw, lever - kWeightRadius, 0.5 * depth, 0);

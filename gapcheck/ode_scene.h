@@ -18,8 +18,10 @@ namespace gapcheck::ode {
 struct ContactLaw {
   double kp = 0, kd = 0;
 };
-// The engine's own contact for a case's actee: a linear penalty spring of
-// the specimen's stiffness (the file's times c.actee_specimen), no damping
+// The engine's own contact for a case's actee: a penalty spring of the
+// specimen's stiffness (the file's times c.actee_specimen; the ODE reality
+// makes it the real actee's law of truth.h, power and h / (h - d), by its
+// secant at the depth), no damping
 // (the implicit step damps it enough), frictionless (the jaws slide on
 // the actee freely).
 ContactLaw contact_law(const Case& c);
@@ -42,7 +44,8 @@ void init_thread();
 // emphasis on a hinge to the arm about the same axis, held at zero
 // relative angle by a stop (lo = hi) whose ERP and CFM make it a stiff
 // torsional spring-damper: the force sensor, read from its deflection.
-// An actee in the jaws is a sphere of its thickness across them, fixed to
+// An actee in the jaws is a small sphere (a point contact, so that the
+// moving jaw's push keeps its lever arm as the jaw turns into it), fixed to
 // the world where the moving jaw's face (a box on the arm, its face a line
 // through the hinge) first touches it at tool.actee's contact angle and
 // lever arm, as jaw_contact found them (ODE has no ellipsoid, so the

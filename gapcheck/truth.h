@@ -20,10 +20,11 @@ struct Truth {
   double inertia = 0;      // kg*m^2, the arm's inertia about the pivot
   double weight = 0;       // N*m, the arm's weight torque amplitude (pivot axis level)
   double latency = 0;      // s, the effort sensor's delay
-  // The real actee's law, a power of its deflection: F = K r (d / r)^n with
-  // r = limit / K (where both give the limit). 0: linear, F = K d. Either
-  // way times h / (h - d), h its thickness across the jaws (what is left
-  // when it is squeezed flat cannot be squeezed). K is the specimen's.
+  // The specimen in the jaws stiffens as a power n of its contact's
+  // depth, in each engine's own terms (a reality says how), where the
+  // specimen the plates measured did not. 0: it is of the plates' kind.
+  // Never afford's actee law: each engine's contact is its own, and the
+  // actee file holds what the plates rig measured of it.
   double actee_exponent = 0;
   std::vector<std::string> names() const;  // the afford effect names of what is non-zero
 };
