@@ -5,29 +5,41 @@
 #include <stdexcept>
 #include <string>
 
+#include "plates_fit.h"
+
 namespace fs = std::filesystem;
 
 namespace gapcheck {
 namespace {
 
 // The shipped actee file with its stiffness replaced by the plates' (every
-// other line as it was).
-void write_actee(const fs::path& shipped, const fs::path& to, double stiffness) {
+// other line as it was) and, where the plates' curve wanted the power
+// law, that law as the file's `actee_compliance` effect.
+void write_actee(const fs::path& shipped, const fs::path& to, const PlatesFit& law) {
   std::ifstream in(shipped);
   if (!in) throw std::runtime_error("gapcheck: cannot read " + shipped.string());
   std::ofstream o(to);
   std::string line;
   bool replaced = false;
   while (std::getline(in, line)) {
+    if (line.rfind("effects:", 0) == 0) throw std::runtime_error("gapcheck: " + shipped.string() + " has effects of its own");
     if (line.rfind("stiffness:", 0) == 0) {
       char buf[96];
-      std::snprintf(buf, sizeof buf, "stiffness: %.9g N/m", stiffness);
+      std::snprintf(buf, sizeof buf, "stiffness: %.9g N/m", law.stiffness);
       line = buf;
       replaced = true;
     }
     o << line << "\n";
   }
   if (!replaced) throw std::runtime_error("gapcheck: " + shipped.string() + " has no stiffness line");
+  if (law.exponent > 0) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "effects: {actee_compliance: {exponent: %.9g, reference: %.9g mm}}", law.exponent,
+                  law.reference * 1000);
+    o << "# fitted on the plates' curve: its RMS misfit " << law.rms_power << " N, the linear law's " << law.rms_linear
+      << " N\n"
+      << buf << "\n";
+  }
 }
 
 }  // namespace
@@ -69,7 +81,14 @@ fs::path write_case(const fs::path& out, const Case& c, const std::vector<std::v
   if (actee) {
     if (!plates) throw std::runtime_error(c.name + ": an actee without its plates' measurement");
     const std::string file = c.name + "-actee.yaml";
-    write_actee(c.tool.actee->file, dir / file, plates->stiffness);
+    // The curve fitted with the file's family; a reality that gives no
+    // curve gives the linear law's stiffness.
+    PlatesFit law;
+    law.stiffness = plates->stiffness;
+    if (!plates->deflection.empty()) {
+      law = fit_plates(plates->deflection, plates->force, c.tool.actee->thickness, c.tool.actee->limit);
+    }
+    write_actee(c.tool.actee->file, dir / file, law);
     std::snprintf(line, sizeof line, "actee: {file: %s, at: %.9g mm}\n", file.c_str(), c.tool.actee->at * 1000);
     m << line;
   }

@@ -97,6 +97,23 @@ struct Hand {
   double sensor_damping = 0.01;    // N*m*s/rad
 };
 
+// The real actee's stiffening in MuJoCo's own terms (its contact's solimp:
+// the impedance d rises with the depth p from `d0` at contact to `dmax` at
+// p >= `width`, along MuJoCo's sigmoid of `midpoint` and `power`). The
+// MuJoCo reality sets its solref so that d = dmax gives the specimen's
+// stiffness; at a depth p its contact then pushes with the specimen's
+// stiffness times p times law(p) (MuJoCo's static force, solref direct:
+// k d^2 p / (dmax^2 (1 - d) A) for the solref k, the contact's inverse
+// weight A). d0 == dmax (the effect-free specimen): a flat impedance,
+// MuJoCo's linear spring.
+struct ActeeImpedance {
+  double d0 = 0.9, dmax = 0.9;
+  double width = 1e-3;  // m
+  double midpoint = 0.5, power = 2;
+  double at(double depth) const;   // d at a depth (m), as MuJoCo's getimpedance
+  double law(double depth) const;  // the force's share of the linear spring's at that depth
+};
+
 // One case: a tool (its nominal file's numbers, truth.h), the truth beyond
 // the file, the design.
 struct Case {
@@ -113,6 +130,10 @@ struct Case {
   // The real actee's stiffness over its shipped file's (a specimen of its
   // own): what the plates measure and the measurement's actee file says.
   double actee_specimen = 1;
+  // The real actee's stiffening for the MuJoCo reality (with the library's
+  // actee_compliance in the truth; else flat); truth.actee_exponent is the
+  // same effect as a power law, for the ODE reality.
+  ActeeImpedance actee_impedance;
   // With an actee: the moving jaw's geoms and the actee's as afford's
   // exported scene places them (jaw_contact.h), for the realities' scenes.
   JawScene jaws;

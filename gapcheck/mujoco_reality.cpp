@@ -8,10 +8,15 @@
 // toward the drive's target and pushing the arm through a stiff, damped
 // force sensor (a fixed tendon between the two hinges): the effort is the
 // force that tendon carries at the emphasis. The actee is a MuJoCo geom in
-// the jaws whose contact with the moving jaw is MuJoCo's own soft contact
-// (solref, solimp), dropped when its force passes the file's limit; a
-// load cell reads that contact's force. Between two plates the same geom
-// and contact give the actee's law as a testing machine reads it.
+// the jaws whose contact with the moving jaw is MuJoCo's own soft contact,
+// its solref and solimp set once in the scene and never changed while it
+// plays (the effect-free specimen a flat impedance, MuJoCo's linear
+// spring; the library's actee_compliance an impedance that rises with
+// depth, design.h), dropped when its force passes the file's limit; a load
+// cell reads that contact's force. Between two plates the reference
+// specimen of the kind (the effect-free contact, of the case's specimen
+// stiffness) gives the curve a testing machine reads, which the
+// experimenter fits with the actee file's law (plates_fit.h).
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
@@ -24,6 +29,7 @@
 #include <string>
 
 #include "jaw_contact.h"
+#include "plates_fit.h"
 #include "reality.h"
 
 namespace gapcheck {
@@ -38,17 +44,18 @@ constexpr double kMinInertia = 1e-6;
 // m: where the hidden weight's mass sits, close to the pivot so that its
 // own inertia (weight * r / g) is a hundredth of its torque per 100 rad/s^2.
 constexpr double kWeightRadius = 1e-3;
-// MuJoCo's soft contact pushes with f = -solref[0] p / ((1 - d) A) at a
-// penetration p (direct solref, constant impedance d), A the pressing
-// bodies' mean inverse weight at qpos0 (body_invweight0). That weight is
-// the arm's about a hinge in the tool and the plate's on the plates' rig:
-// the same contact would be stiffer on one than on the other, which no
-// real material is. Both rigs give the body that presses the actee this
-// one inverse weight, so that one solref is one law; large against the
-// true inverse weights (r^2 / I of the arm, 1 / m of the plate) the contact
-// then acts as a spring on the true masses.
+// MuJoCo's soft contact pushes with f = k d^2 p / (dmax^2 (1 - d) A) at a
+// penetration p (direct solref, k = -solref[0], impedance d from solimp,
+// at rest), A the pressing bodies' mean inverse weight at qpos0
+// (body_invweight0). That weight is the arm's about a hinge in the tool
+// and the plate's on the plates' rig: the same contact would be stiffer
+// on one than on the other, which no real material is. Both rigs give the
+// body that presses the actee this one inverse weight, so that one solref
+// is one material; large against the true inverse weights (r^2 / I of the
+// arm, 1 / m of the plate) the contact then acts as a spring on the true
+// masses. The actees are smooth (tools.cpp): each jaw geom's pair makes
+// one contact, so no solref is shared among a face's corners.
 constexpr double kInvWeight = 1e6;  // 1/kg
-constexpr double kImpedance = 0.9;
 // The contact's damping: a tenth of critical for the arm at its lightest.
 constexpr double kContactDampingRatio = 0.1;
 constexpr double kFar = 10;  // m, where a broken actee goes (out of reach of every geom)
@@ -72,13 +79,6 @@ std::string geom_xml(const std::string& name, const SceneGeom& g, bool at_origin
                 name.c_str(), geom_type(g.type), g.size[0], g.size[1], g.size[2], at_origin ? 0.0 : g.pos[0],
                 at_origin ? 0.0 : g.pos[1], at_origin ? 0.0 : g.pos[2], at_origin ? 1.0 : g.quat[0],
                 at_origin ? 0.0 : g.quat[1], at_origin ? 0.0 : g.quat[2], at_origin ? 0.0 : g.quat[3]);
-  return buf;
-}
-
-// The actee's contacts' impedance, the same at every depth.
-std::string solimp() {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%g %g 0.001", kImpedance, kImpedance);
   return buf;
 }
 
@@ -110,32 +110,29 @@ struct Sim {
   Sim& operator=(const Sim&) = delete;
 };
 
-// The real actee's contact: its law (truth.h) as the secant stiffness at a
-// penetration, and MuJoCo's solref for a stiffness and a damping.
-struct ActeeLaw {
-  double stiffness = 0;  // N/m, the specimen's
-  double reference = 0;  // m, limit / stiffness
-  double exponent = 0;   // 0: linear
-  double thickness = 0;  // m, across the jaws
-  double elastic = 1;    // the share that does not relax (viscoelastic_actee)
-  double damping = 0;    // N*s/m
+// The actee's contact, fixed for a case: MuJoCo's solref (direct) and
+// solimp, and the static force they give (for the harness's relaxing share).
+struct ActeeContact {
+  double stiffness = 0;  // N/m, the specimen's where the impedance is at dmax
+  double elastic = 1;    // the share that does not relax (viscoelastic_actee): the solref's
+  double damping = 0;    // N*s/m, where the impedance is at dmax
+  ActeeImpedance impedance;  // design.h: flat for the effect-free specimen
 
-  double force(double p) const {  // N, elastic and relaxing together
-    if (p <= 0) return 0;
-    const double law = exponent == 0 ? stiffness * p : stiffness * reference * std::pow(p / reference, exponent);
-    return law * thickness / (thickness - std::min(p, 0.9 * thickness));
+  // -k and -b such that the impedance at dmax gives the stiffness and damping.
+  std::string solref() const {
+    char buf[64];
+    const double scale = (1 - impedance.dmax) * kInvWeight;
+    std::snprintf(buf, sizeof buf, "%.12g %.12g", -elastic * stiffness * scale, -damping * scale);
+    return buf;
   }
-  // solref for the elastic share at penetration p, shared by the contacts
-  // MuJoCo makes (both from the step before): a box's face on a plate is
-  // four contacts, its edge under a jaw two, each pushing as hard as one
-  // alone would, and one law must not count its corners.
-  void solref(double p, int contacts, double out[2]) const {
-    const double floor_p = 1e-3 * reference;  // the secant of a power law at 0 is 0 (or infinite)
-    const double q = std::max(p, floor_p);
-    const double secant = elastic * force(q) / q / std::max(1, contacts);
-    out[0] = -secant * (1 - kImpedance) * kInvWeight;
-    out[1] = -damping / std::max(1, contacts) * (1 - kImpedance) * kInvWeight;
+  std::string solimp() const {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "%.12g %.12g %.12g %.12g %.12g", impedance.d0, impedance.dmax, impedance.width,
+                  impedance.midpoint, impedance.power);
+    return buf;
   }
+  // N: MuJoCo's static force at penetration p (m), elastic and relaxing together.
+  double force(double p) const { return p > 0 ? stiffness * p * impedance.law(p) : 0.0; }
 };
 
 double arm_inertia(const Case& c) {
@@ -143,24 +140,27 @@ double arm_inertia(const Case& c) {
   return kMinInertia + c.truth.inertia + mass * kWeightRadius * kWeightRadius;
 }
 
-ActeeLaw actee_law(const Case& c) {
+// The specimen in the jaws (`real`: its stiffening and viscoelastic share)
+// or the reference specimen of its kind that the plates measure
+// (effect-free: a flat impedance, nothing relaxing), both of the case's
+// specimen stiffness.
+ActeeContact actee_contact(const Case& c, bool real) {
   const ToolActee& a = *c.tool.actee;
-  ActeeLaw law;
-  law.stiffness = a.stiffness * c.actee_specimen;
-  law.reference = a.limit / law.stiffness;
-  law.exponent = c.truth.actee_exponent;
-  law.thickness = a.thickness;
-  law.elastic = 1 - c.outside.viscoelastic_share;
+  ActeeContact contact;
+  contact.stiffness = a.stiffness * c.actee_specimen;
+  if (real) {
+    contact.impedance = c.actee_impedance;
+    contact.elastic = 1 - c.outside.viscoelastic_share;
+  }
   const double mass = arm_inertia(c) / (a.lever * a.lever);  // kg, the arm's at the jaw
-  law.damping = 2 * kContactDampingRatio * std::sqrt(law.stiffness * mass);
-  return law;
+  contact.damping = 2 * kContactDampingRatio * std::sqrt(contact.stiffness * mass);
+  return contact;
 }
 
 // The actee's contacts: the normal force they carry (N) and the deepest
 // penetration (m).
 struct ContactRead {
   double force = 0, penetration = 0;
-  int contacts = 0;
 };
 ContactRead read_contacts(const mjModel* m, mjData* d, int actee_geom) {
   ContactRead r;
@@ -171,7 +171,6 @@ ContactRead read_contacts(const mjModel* m, mjData* d, int actee_geom) {
     mj_contactForce(m, d, i, f);
     r.force += f[0];
     r.penetration = std::max(r.penetration, -con.dist);
-    ++r.contacts;
   }
   return r;
 }
@@ -208,10 +207,10 @@ std::vector<Measured> MujocoReality::play(const Case& c, const Drive& drive, uns
   const double b = tool.effort_at;
   const double inertia = arm_inertia(c);
   const double hand_inertia = c.hand.mass * b * b;
-  const ActeeLaw law = with_actee ? actee_law(c) : ActeeLaw{};
+  const ActeeContact contact = with_actee ? actee_contact(c, true) : ActeeContact{};
   // The stiffest mode: the arm between the sensor, the spring and the
-  // actee (its law stiffens, so thrice its linear stiffness), or the hand.
-  const double actee_rotational = with_actee ? 3 * law.stiffness * tool.actee->lever * tool.actee->lever : 0.0;
+  // actee (its impedance may stiffen it, so thrice its stiffness), or the hand.
+  const double actee_rotational = with_actee ? 3 * contact.stiffness * tool.actee->lever * tool.actee->lever : 0.0;
   const double omega = std::max(std::sqrt((c.hand.sensor_stiffness + tool.torsion + actee_rotational) / inertia),
                                 std::sqrt((drive.servo_stiffness + c.hand.sensor_stiffness) / hand_inertia));
   const int substeps = static_cast<int>(std::ceil(1e-3 / step_for(omega)));
@@ -258,7 +257,8 @@ std::vector<Measured> MujocoReality::play(const Case& c, const Drive& drive, uns
   if (with_actee) {
     xml += "  <contact>\n";
     for (size_t i = 0; i < scene.moving.size(); ++i) {
-      xml += "    <pair geom1='jaw" + std::to_string(i) + "' geom2='actee' condim='1' solimp='" + solimp() + "'/>\n";
+      xml += "    <pair geom1='jaw" + std::to_string(i) + "' geom2='actee' condim='1' solref='" + contact.solref() +
+             "' solimp='" + contact.solimp() + "'/>\n";
     }
     xml += "  </contact>\n";
   }
@@ -286,8 +286,6 @@ std::vector<Measured> MujocoReality::play(const Case& c, const Drive& drive, uns
 
   Maxwell maxwell{c.outside.viscoelastic_share, c.outside.viscoelastic_tau};
   double backlash_end = 0;  // rad, where the spring's end is (backlash)
-  double penetration = 0;   // m, the actee's, at the step before
-  int contacts = 0;         // MuJoCo's contacts with it, at the step before
   double load = 0;          // N, the actee's force
   bool broken = false;
   // The harness's torques on the hinge, then one MuJoCo step.
@@ -311,16 +309,13 @@ std::vector<Measured> MujocoReality::play(const Case& c, const Drive& drive, uns
       torque += c.outside.detent_torque * std::sqrt(std::exp(1.0)) * u * std::exp(-0.5 * u * u);
     }
     if (with_actee && !broken) {
-      for (int i = 0; i < m->npair; ++i) law.solref(penetration, contacts, m->pair_solref + mjNREF * i);
       torque += maxwell.force * tool.actee->lever;
     }
     d->qfrc_applied[arm_dof] = torque;
     mj_step(m, d);
     if (with_actee && !broken) {
       const ContactRead r = read_contacts(m, d, actee_geom);
-      penetration = r.penetration;
-      contacts = r.contacts;
-      maxwell.step(law.force(penetration), h, r.penetration > 0);
+      maxwell.step(contact.force(r.penetration), h, r.penetration > 0);
       load = r.force + maxwell.force;
       if (tool.actee->breaks && load > tool.actee->limit) {  // the shell gives way: it resists no more
         broken = true;
@@ -377,15 +372,15 @@ std::vector<Measured> MujocoReality::play(const Case& c, const Drive& drive, uns
 
 PlatesLaw MujocoReality::plates(const Case& c) const {
   const ToolActee& a = *c.tool.actee;
-  const ActeeLaw law = actee_law(c);
+  const ActeeContact contact = actee_contact(c, false);
   const SceneGeom& actee = c.jaws.actee;
   // The plate: a crosshead on a slide across the jaws' direction (y),
   // driven ten times as stiff as the actee, starting just touching it.
   constexpr double kPlateMass = 0.05;  // kg
   constexpr double kPlateHalf = 0.005; // m
-  const double kp = 10 * law.stiffness;
+  const double kp = 10 * contact.stiffness;
   const double kv = 2 * std::sqrt(kp * kPlateMass);
-  const double h = 1e-3 / std::ceil(1e-3 / step_for(std::sqrt(3 * (kp + law.stiffness) / kPlateMass)));
+  const double h = 1e-3 / std::ceil(1e-3 / step_for(std::sqrt(3 * (kp + contact.stiffness) / kPlateMass)));
   char buf[2048];
   std::snprintf(buf, sizeof buf,
                 "<mujoco model='gapcheck-plates'>\n"
@@ -401,13 +396,13 @@ PlatesLaw MujocoReality::plates(const Case& c) const {
                 "      <geom name='plate' type='box' size='0.05 %.9g 0.05' contype='0' conaffinity='0'/>\n"
                 "    </body>\n"
                 "  </worldbody>\n"
-                "  <contact><pair geom1='plate' geom2='actee' condim='1' solimp='%s'/></contact>\n"
+                "  <contact><pair geom1='plate' geom2='actee' condim='1' solref='%s' solimp='%s'/></contact>\n"
                 "  <actuator><general name='crosshead' joint='press' gaintype='fixed' gainprm='%.9g' biastype='affine'\n"
                 "                     biasprm='0 %.9g %.9g'/></actuator>\n"
                 "</mujoco>\n",
                 h, kPlateHalf, -(0.5 * a.thickness + kPlateHalf), actee.quat[0], actee.quat[1], actee.quat[2],
                 actee.quat[3], geom_xml("actee", actee, true).c_str(), 0.5 * a.thickness + kPlateHalf, kPlateMass,
-                kPlateHalf, solimp().c_str(), kp, -kp, -kv);
+                kPlateHalf, contact.solref().c_str(), contact.solimp().c_str(), kp, -kp, -kv);
   Sim sim(buf);
   mjModel* m = sim.m;
   mjData* d = sim.d;
@@ -415,40 +410,26 @@ PlatesLaw MujocoReality::plates(const Case& c) const {
   m->body_invweight0[2 * plate] = kInvWeight;
   m->body_invweight0[2 * plate + 1] = kInvWeight;
   const int actee_geom = mj_name2id(m, mjOBJ_GEOM, "actee");
-  // Slowly: to the limit's deflection in 2 s, read at 1 kHz up to the limit.
-  const double speed = law.reference / 2;  // m/s
-  Maxwell maxwell{c.outside.viscoelastic_share, c.outside.viscoelastic_tau};
-  double penetration = 0;
-  int contacts = 0;
-  double sum_fg = 0, sum_gg = 0;
-  std::vector<std::pair<double, double>> points;  // (the law's shape g, N)
+  // Slowly: to the limit's deflection in 2 s, read at 1 kHz up to the
+  // limit, the crosshead's travel since it touched and the load cell.
+  const double speed = a.limit / contact.stiffness / 2;  // m/s
+  const int substeps = static_cast<int>(std::lround(1e-3 / h));
+  PlatesLaw out;
   for (int k = 1; k <= 4000; ++k) {
-    for (int i = 0; i < static_cast<int>(std::lround(1e-3 / h)); ++i) {
+    for (int i = 0; i < substeps; ++i) {
       d->ctrl[0] = speed * d->time;
-      law.solref(penetration, contacts, m->pair_solref);
       mj_step(m, d);
-      const ContactRead r = read_contacts(m, d, actee_geom);
-      penetration = r.penetration;
-      contacts = r.contacts;
-      maxwell.step(law.force(penetration), h, r.penetration > 0);
     }
-    const double x = d->qpos[0];  // m, the crosshead's travel since it touched
-    const double force = read_contacts(m, d, actee_geom).force + maxwell.force;
+    const double x = d->qpos[0];  // m
+    const double force = read_contacts(m, d, actee_geom).force;
     if (force > a.limit) break;
     if (x <= 0) continue;
-    // The file's law: F = K x h / (h - x) (actees/README.md); K by least
-    // squares through 0.
-    const double g = x * a.thickness / (a.thickness - x);
-    sum_fg += force * g;
-    sum_gg += g * g;
-    points.emplace_back(g, force);
+    out.deflection.push_back(x);
+    out.force.push_back(force);
   }
-  if (points.size() < 10) throw std::runtime_error(c.name + ": the plates read fewer than 10 points");
-  PlatesLaw out;
-  out.stiffness = sum_fg / sum_gg;
-  double sq = 0;
-  for (const auto& [g, f] : points) sq += std::pow(f - out.stiffness * g, 2);
-  out.rms_misfit = std::sqrt(sq / static_cast<double>(points.size()));
+  const PlatesFit fit = fit_plates(out.deflection, out.force, a.thickness, a.limit);
+  out.stiffness = fit.stiffness;
+  out.rms_misfit = fit.rms_misfit;
   return out;
 }
 

@@ -14,11 +14,16 @@
 
 namespace gapcheck {
 
-// An actee's law as measured between plates: the linear stiffness that
-// fits force against deflection up to its limit, least squares through 0.
+// An actee as measured between plates: the curve of force against the
+// crosshead's travel since the plates touched it, up to its limit, and
+// the law an experimenter fits to it (plates_fit.h). Where `deflection`
+// is empty the reality gives only `stiffness`, the linear law's K, and
+// the actee file takes that.
 struct PlatesLaw {
-  double stiffness = 0;  // N/m
-  double rms_misfit = 0; // N, of the straight line over the measured points
+  std::vector<double> deflection;  // m
+  std::vector<double> force;       // N
+  double stiffness = 0;  // N/m, the law fitted (plates_fit.h's K where the curve is given)
+  double rms_misfit = 0; // N, of that law over the measured points
 };
 
 class Reality {
