@@ -21,8 +21,9 @@ struct Truth {
   double weight = 0;       // N*m, the arm's weight torque amplitude (pivot axis level)
   double latency = 0;      // s, the effort sensor's delay
   // The specimen in the jaws stiffens as a power n of its contact's
-  // depth, in each engine's own terms (a reality says how), where the
-  // specimen the plates measured did not. 0: it is of the plates' kind.
+  // depth, in each engine's own terms (ODE: Hunt and Crossley's k d^n;
+  // MuJoCo plays Case::actee_impedance instead and n is the label's),
+  // where the specimen the plates measured did not. 0: of the plates' kind.
   // Never afford's actee law: each engine's contact is its own, and the
   // actee file holds what the plates rig measured of it.
   double actee_exponent = 0;
