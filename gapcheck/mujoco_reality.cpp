@@ -31,6 +31,7 @@
 #include "jaw_contact.h"
 #include "plates_fit.h"
 #include "reality.h"
+#include "sensor_readout.h"
 
 namespace gapcheck {
 namespace {
@@ -333,13 +334,8 @@ std::vector<Measured> MujocoReality::play(const Case& c, const Drive& drive, uns
   mj_forward(m, d);
   for (int k = 0; k < 300 * substeps; ++k) step(0);
 
-  std::mt19937 random(noise_seed);
-  const Sensors& s = c.sensors;
-  std::normal_distribution<double> effort_noise(0.0, s.effort_noise), angle_noise(0.0, s.angle_noise),
-      load_noise(0.0, s.actee_noise);
-  auto quantise = [](double x, double q) { return q > 0 ? q * std::round(x / q) : x; };
+  SensorReadout sensors(c, noise_seed);
   const int samples = static_cast<int>(std::lround(drive.seconds * 1000));
-  std::vector<double> history;  // N, the sensor's force at 1 kHz before its delay
   std::vector<Measured> out;
   out.reserve(static_cast<size_t>(samples));
   for (int k = 0; k < samples; ++k) {
@@ -349,22 +345,8 @@ std::vector<Measured> MujocoReality::play(const Case& c, const Drive& drive, uns
     // force closes the arm.
     const double stretch = d->qpos[hand] - d->qpos[hinge];
     const double rate = d->qvel[hand_dof] - d->qvel[arm_dof];
-    history.push_back(-(c.hand.sensor_stiffness * stretch + c.hand.sensor_damping * rate) / b);
-    const double delayed = k - truth.latency * 1000;
-    double effort = history.front();
-    if (delayed > 0) {
-      const auto i = static_cast<size_t>(delayed);
-      const double w = delayed - static_cast<double>(i);
-      effort = i + 1 < history.size() ? (1 - w) * history[i] + w * history[i + 1] : history[i];
-    }
-    effort = effort * (1 + c.outside.gain_error) + c.outside.offset_drift * t;
-    Measured sample;
-    sample.t = t;
-    sample.angle = quantise(d->qpos[hinge] + angle_noise(random), s.angle_quantum);
-    sample.effort = quantise(effort + effort_noise(random), s.effort_quantum);
-    sample.actee = tool.actee ? quantise(load + load_noise(random), s.actee_quantum) : 0.0;
-    sample.broken = broken;
-    out.push_back(sample);
+    const double felt = -(c.hand.sensor_stiffness * stretch + c.hand.sensor_damping * rate) / b;
+    out.push_back(sensors.read(k, d->qpos[hinge], felt, load, broken));
     for (int i = 0; i < substeps; ++i) step(t + (i + 1) * h);
   }
   return out;

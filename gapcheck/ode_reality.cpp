@@ -20,6 +20,7 @@
 #include "ode_scene.h"
 #include "plates_fit.h"
 #include "reality.h"
+#include "sensor_readout.h"
 
 namespace gapcheck {
 namespace {
@@ -33,7 +34,6 @@ constexpr double kPlatesGap = 2e-5;       // m, the plate's start above the acte
 // the jaws may have beyond it; true: the one in the jaws itself.
 constexpr bool kPlatesTestTheRealSpecimen = false;
 
-double quantise(double x, double q) { return q > 0 ? q * std::round(x / q) : x; }
 
 // The actee's stiffness about the hinge (N*m/rad) where it is stiffest
 // before its limit: the power law's tangent at its reference.
@@ -216,33 +216,15 @@ std::vector<Measured> OdeReality::play(const Case& c, const Drive& drive, unsign
   spring_angle = start;
   for (int i = 0, settle = static_cast<int>(std::lround(kSettle / h)); i < settle; ++i) step(start);
 
-  std::mt19937 random(noise_seed);
-  std::normal_distribution<double> unit(0.0, 1.0);
-  auto noise = [&](double deviation) { return deviation > 0 ? deviation * unit(random) : 0.0; };
+  SensorReadout sensors(c, noise_seed);
   const int samples = static_cast<int>(std::lround(drive.seconds * 1000));
-  std::vector<double> effort_history;  // N, at 1 kHz, before the sensor's delay
   std::vector<Measured> trace;
   trace.reserve(static_cast<size_t>(samples));
   for (int k = 0; k < samples; ++k) {
     const double t = k * 1e-3;
     // The sensor's torque on the arm (its spring and damper) opens
     // positive; the effort closes positive.
-    effort_history.push_back(-scene.sensor_torque() / b);
-    const double delayed_index = k - truth.latency * 1000;
-    double effort = effort_history.front();
-    if (delayed_index > 0) {
-      const auto i = static_cast<size_t>(delayed_index);
-      const double w = delayed_index - static_cast<double>(i);
-      effort = i + 1 < effort_history.size() ? (1 - w) * effort_history[i] + w * effort_history[i + 1] : effort_history[i];
-    }
-    effort = (1 + out.gain_error) * effort + out.offset_drift * t;
-    Measured m;
-    m.t = t;
-    m.angle = quantise(scene.angle() + noise(c.sensors.angle_noise), c.sensors.angle_quantum);
-    m.effort = quantise(effort + noise(c.sensors.effort_noise), c.sensors.effort_quantum);
-    m.actee = tool.actee ? quantise(load + noise(c.sensors.actee_noise), c.sensors.actee_quantum) : 0.0;
-    m.broken = broken;
-    trace.push_back(m);
+    trace.push_back(sensors.read(k, scene.angle(), -scene.sensor_torque() / b, load, broken));
     for (int s = 1; s <= substeps; ++s) step(drive.target(t + s * h));
   }
   return trace;

@@ -1,0 +1,40 @@
+#include "sensor_readout.h"
+
+#include <cmath>
+
+namespace gapcheck {
+namespace {
+
+double quantise(double x, double q) { return q > 0 ? q * std::round(x / q) : x; }
+
+}  // namespace
+
+SensorReadout::SensorReadout(const Case& c, unsigned noise_seed) : case_(c), random_(noise_seed) {}
+
+Measured SensorReadout::read(int k, double angle, double effort_now, double load, bool broken) {
+  const double t = k * 1e-3;
+  history_.push_back(effort_now);
+  // The effort of `latency` ago, linear between samples; the first sample
+  // until then.
+  const double delayed = k - case_.truth.latency * 1000;
+  double effort = history_.front();
+  if (delayed > 0) {
+    const auto i = static_cast<size_t>(delayed);
+    const double w = delayed - static_cast<double>(i);
+    effort = i + 1 < history_.size() ? (1 - w) * history_[i] + w * history_[i + 1] : history_[i];
+  }
+  effort = (1 + case_.outside.gain_error) * effort + case_.outside.offset_drift * t;
+  // Three draws a sample, always, so that one signal's noise does not
+  // shift another's.
+  const Sensors& s = case_.sensors;
+  const double n_angle = unit_(random_), n_effort = unit_(random_), n_load = unit_(random_);
+  Measured m;
+  m.t = t;
+  m.angle = quantise(angle + s.angle_noise * n_angle, s.angle_quantum);
+  m.effort = quantise(effort + s.effort_noise * n_effort, s.effort_quantum);
+  m.actee = case_.tool.actee ? quantise(load + s.actee_noise * n_load, s.actee_quantum) : 0.0;
+  m.broken = broken;
+  return m;
+}
+
+}  // namespace gapcheck
