@@ -10,21 +10,23 @@
 
 namespace afford {
 
-// The whiteness of the held-out residual (Ljung-Box over 20 lags) and what
-// it moves with.
+// The whiteness of the held-out residual (a portmanteau test over 20
+// lags, as Ljung-Box's) and what it moves with.
 struct ResidualTest {
-  double q = 0;          // the Ljung-Box statistic
-  double threshold = 0;  // its 99 % point for white noise
+  double q = 0;          // the sum over lags of each lag's squared excess over its Bartlett variance
+  double threshold = 0;  // chi-square's 99 % point for 20 lags
   bool white = false;
   std::string follows;   // the signal it correlates with most ("the direction of motion", ...)
   double correlation = 0;
 };
 
-// Ljung-Box over 20 lags of the residuals of the replays `which`, within
-// their fitted stretches. `noise`, where given: the noise the model's
-// prediction carries by itself, sample by sample, whose autocorrelation is
-// taken off the residual's (noise that is not white is not structure).
-// Sets q, threshold and white.
+// Over 20 lags, the residuals of the replays `which`, within their fitted
+// stretches. `noise`, where given: the noise the model's prediction
+// carries by itself, sample by sample, whose autocovariance (scaled to the
+// residual's) is taken off the residual's, each lag's excess weighed by
+// Bartlett's variance for a noise of that colour (noise that is not white
+// is not structure). Without it, the residual is tested against white
+// noise (Box-Pierce). Sets q, threshold and white.
 ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& residual,
                        const std::vector<size_t>& which, const std::vector<std::vector<double>>* noise = nullptr);
 

@@ -82,7 +82,7 @@ void note_printed(std::string_view text, double value, PrintedDigits* digits) {
   }
   const auto last = static_cast<int>(std::clamp(exponent - decimals, -800L, 800L));
   const int leading = static_cast<int>(std::floor(std::log10(std::abs(value))));
-  ++(*digits)[{last, leading}];
+  ++(*digits)[{last, leading}];  // a handful of keys: a column's cells share their digits
 }
 
 // The deviation of the rounding the printed digits make: each cell's last

@@ -55,6 +55,26 @@ TEST(HeldByFriction, HeldOnlyWhenFrictionCarriesTheWeight) {
   EXPECT_FALSE(s.held);
 }
 
+// Closes the rig's jaws on its 5 g test nut in small steps: every frame
+// with the jaws on it is held exactly when their friction, `mu_sum` times
+// the force, carries its weight (held from m g / mu_sum), with that margin.
+void expect_held_from(Rig& rig, double mu_sum) {
+  rig.close_to(rig.state().contact_angle);
+  const double weight = 0.005 * 9.80665, needed = weight / mu_sum;  // N
+  bool seen_slipping = false, seen_held = false;
+  for (int i = 0; i < 4000 && !seen_held; ++i) {
+    rig.push(1e-7, 1e-7);
+    const State& s = rig.state();
+    if (!s.blocked || s.actee_force <= 0) continue;
+    EXPECT_EQ(s.held, s.actee_force >= needed) << "F = " << s.actee_force;
+    EXPECT_NEAR(s.grip_margin, mu_sum * s.actee_force - weight, 1e-12);
+    seen_slipping = seen_slipping || !s.held;
+    seen_held = seen_held || s.held;
+  }
+  EXPECT_TRUE(seen_slipping);
+  EXPECT_TRUE(seen_held);
+}
+
 TEST(HeldByFriction, SqueezingTheNutHoldsItFromTheForceFrictionNeeds) {
   // The test nut: 5 g, mu = 0.4, so held from m g / (2 mu) = 0.04903325 N / 0.8
   // = 0.06129156 N at the jaws. Closing in small steps, every frame with the
@@ -63,19 +83,7 @@ TEST(HeldByFriction, SqueezingTheNutHoldsItFromTheForceFrictionNeeds) {
   const Tool tool = tools_of_every_pattern()[0];
   const Model m = model_of(tool.yaml, &nut, tool.load);
   Rig rig(m, tool.effort);
-  rig.close_to(rig.state().contact_angle);
-  constexpr double kNeeded = 0.005 * 9.80665 / (2 * 0.4);
-  bool seen_slipping = false, seen_held = false;
-  for (int i = 0; i < 4000 && !seen_held; ++i) {
-    rig.push(1e-7, 1e-7);
-    const State& s = rig.state();
-    if (!s.blocked || s.actee_force <= 0) continue;
-    EXPECT_EQ(s.held, s.actee_force >= kNeeded) << "F = " << s.actee_force;
-    seen_slipping = seen_slipping || !s.held;
-    seen_held = seen_held || s.held;
-  }
-  EXPECT_TRUE(seen_slipping);  // gripped below 0.0613 N: pressed, not held
-  EXPECT_TRUE(seen_held);
+  expect_held_from(rig, 2 * 0.4);  // gripped below 0.0613 N: pressed, not held
 }
 
 TEST(HeldByFriction, ARubberJawCarriesMoreThanTheActeesOwnFriction) {
@@ -91,20 +99,7 @@ TEST(HeldByFriction, ARubberJawCarriesMoreThanTheActeesOwnFriction) {
   const std::string nut = nut_yaml();
   const Model m = model_of(tool, &nut, tools_of_every_pattern()[0].load);
   Rig rig(m, tools_of_every_pattern()[0].effort);
-  rig.close_to(rig.state().contact_angle);
-  constexpr double kNeeded = 0.005 * 9.80665 / (0.4 + 1.0);
-  bool seen_slipping = false, seen_held = false;
-  for (int i = 0; i < 4000 && !seen_held; ++i) {
-    rig.push(1e-7, 1e-7);
-    const State& s = rig.state();
-    if (!s.blocked || s.actee_force <= 0) continue;
-    EXPECT_EQ(s.held, s.actee_force >= kNeeded) << "F = " << s.actee_force;
-    EXPECT_NEAR(s.grip_margin, 1.4 * s.actee_force - 0.005 * 9.80665, 1e-12);
-    seen_slipping = seen_slipping || !s.held;
-    seen_held = seen_held || s.held;
-  }
-  EXPECT_TRUE(seen_slipping);
-  EXPECT_TRUE(seen_held);
+  expect_held_from(rig, 0.4 + 1.0);
 }
 
 TEST(HeldByFriction, AFrictionOutOfRangeIsAnErrorAtItsValue) {
