@@ -37,7 +37,7 @@ void BM_Session(benchmark::State& bench, const char* name) {
     ScriptedAgent agent(session.script);
     AllocationProbe probe;
     Observer* const observers[] = {&probe};
-    RunResult r = run_session(session.model, *session.rules, agent, observers);
+    RunResult r = run_session(session, *session.rules, agent, observers);
     frames += r.frames;
     allocations += probe.during_frames();
     benchmark::DoNotOptimize(r);

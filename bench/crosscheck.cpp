@@ -144,7 +144,7 @@ int crosscheck(const std::string& source, int threads) {
       ScriptedAgent agent(session.script);
       LoadTrace trace(&out[i]);
       Observer* observers[] = {&trace};
-      run_session(session.model, *e.rules, agent, observers);
+      run_session(session, *e.rules, agent, observers);
     }
     std::unique_lock<std::mutex> lock(loading);
     MujocoScene scene(session);

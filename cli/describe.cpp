@@ -1,13 +1,15 @@
 // afford describe FILE: what the model derives from an object file (lever
 // pattern, mechanical advantage along the arm, interaction space, which
-// actees fit, spring force at each limit); `--effects` lists the optional
-// torque terms. The actees are the shipped ones (data_dir.h) unless
+// actees fit, spring force at each limit), or from a session file (where
+// the jaws touch its actee as placed, what each grip of its script
+// squeezes); `--effects` lists the optional torque terms. The actees are the shipped ones (data_dir.h) unless
 // --actees names a folder.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
+#include <tuple>
 
 #include "commands.h"
 #include "data_dir.h"
@@ -17,6 +19,9 @@
 #include "lever.h"
 #include "load.h"
 #include "model.h"
+#include "grasps.h"
+#include "session.h"
+#include "squeeze.h"
 
 namespace afford::cli {
 namespace {
@@ -107,6 +112,91 @@ void describe_object(const ObjectSpec& o, const std::string& actee_dir) {
   }
 }
 
+// The largest effort of a keyframe's hand: the agent's, or its grasp's if less.
+double effort_cap(const Model& m, const Keyframe& k, std::string* grasp) {
+  const int type = m.grasp_name.empty() ? -1 : classify_grasp(m, k.joint);
+  *grasp = type >= 0 ? m.grasp_name[static_cast<size_t>(type)] : "no grasp type";
+  return type >= 0 ? std::min(m.max_force, m.grasp_max_force[static_cast<size_t>(type)]) : m.max_force;
+}
+
+// A session as placed: where the jaws touch its actee, and what each grip
+// of its script squeezes (the numbers a script is written with).
+// Where the jaws touch an actee as placed.
+void describe_actee(const Model& m, const ForcedLever& lever) {
+  if (!m.has_actee) {
+    std::cout << "no actee\n";
+  } else if (!lever.actee) {
+    std::cout << "actee " << m.actee_name << ": not between the jaws as placed\n";
+  } else {
+    std::cout << "actee " << m.actee_name << " as placed: the jaws touch it at " << q(lever.contact_angle, dim::angle)
+              << ", its load's arm " << q(lever.load_distance, dim::length) << ", " << q(lever.thickness, dim::length)
+              << " across the jaws; limit " << q(m.actee_limit, dim::force) << (m.actee_breaks ? " (it breaks)" : "")
+              << "\n";
+  }
+}
+
+void describe_session(const CompiledSession& s) {
+  std::cout << "session " << s.name << ": " << s.description << "\n";
+  const Model& hand = s.model;  // the tool and the hand are every actee's model's
+  std::cout << "object " << hand.object_name << ", rest " << q(hand.theta_rest, dim::angle) << ", hand "
+            << hand.agent_name << " (force_gain " << q(hand.force_gain, dim::stiffness) << ", at most "
+            << q(hand.max_force, dim::force) << ")\n";
+  // Each actee's model and lever: the one of `actee:`, or each of `actees:`.
+  std::vector<const Model*> models;
+  if (s.actee_models.empty()) models.push_back(&s.model);
+  for (const Model& m : s.actee_models) models.push_back(&m);
+  std::vector<ForcedLever> levers;
+  for (size_t i = 0; i < models.size(); ++i) {
+    levers.push_back(lever_at_start(*models[i]));
+    if (!s.actee_names.empty()) std::cout << "'" << s.actee_names[i] << "': ";
+    describe_actee(*models[i], levers.back());
+  }
+  std::cout << "grips of the script (in the lever's static balance; engine/squeeze.h):\n";
+  // Which actee is on the tool at a keyframe: the last one taken by then.
+  size_t in_play = s.first_actee;
+  size_t next_change = 0;
+  // Each thumb distance, cap and actee once: where the jaws touch, and the limit.
+  std::vector<std::tuple<double, double, size_t>> told;  // (thumb m, cap N, actee)
+  for (const Keyframe& k : s.script.keyframes) {
+    for (; next_change < s.actee_changes.size() && s.actee_changes[next_change].t <= k.t; ++next_change) {
+      in_play = s.actee_changes[next_change].actee;
+    }
+    if (!k.grip) continue;
+    const Model& m = *models[in_play];
+    const ForcedLever& lever = levers[in_play];
+    const double r = k.thumb_rest.x();  // m, the thumb's distance along the moving arm
+    const double squeeze = std::abs(r) * (m.theta_rest - k.thumb_angle);
+    std::string grasp;
+    const double cap = effort_cap(m, k, &grasp);
+    const double effort = effort_for_squeeze(m, lever, r, squeeze, cap);
+    std::printf("  t %s: squeeze %s at %s, %s: effort %s", q(k.t, dim::time).c_str(), q(squeeze, dim::length).c_str(),
+                q(r, dim::length).c_str(), grasp.c_str(), q(effort, dim::force).c_str());
+    if (lever.actee) {
+      const double force = settle_under_effort(m, lever, r, effort).actee_force;
+      const std::string name = s.actee_names.empty() ? std::string("the actee") : "'" + s.actee_names[in_play] + "'";
+      if (m.actee_breaks && force > m.actee_limit) {
+        std::printf(", %s past its limit (it breaks)", name.c_str());
+      } else {
+        std::printf(", %s %s", name.c_str(), q(force, dim::force).c_str());
+      }
+    }
+    std::printf("\n");
+    const auto key = std::make_tuple(r, cap, in_play);
+    if (!lever.actee || std::find(told.begin(), told.end(), key) != told.end()) continue;
+    told.push_back(key);
+    std::printf("    with the thumb at %s the jaws touch at a squeeze of %s", q(r, dim::length).c_str(),
+                q(std::max(0.0, std::abs(r) * (m.theta_rest - lever.contact_angle)), dim::length).c_str());
+    double to_limit = 0;
+    std::string why;
+    if (effort_for_actee_force(m, lever, r, m.actee_limit, cap, &to_limit, &why)) {
+      std::printf("; the limit needs a squeeze of %s (effort %s)\n",
+                  q(squeeze_for_effort(m, lever, r, to_limit), dim::length).c_str(), q(to_limit, dim::force).c_str());
+    } else {
+      std::printf("; the limit is out of reach: %s\n", why.c_str());
+    }
+  }
+}
+
 struct DescribeOptions {
   std::string file, actee_dir;
   bool effects = false;
@@ -123,7 +213,13 @@ int describe(const DescribeOptions& o) {
   if (file.empty()) return usage_error("describe needs a FILE (or --effects)");
   const Node root = load_yaml_file(file);
   const std::string kind = file_kind(root);
-  if (kind != "object") return usage_error("describe reads object files; " + file + " is a " + kind + " file");
+  if (kind == "session") {
+    describe_session(load_session(file));
+    return 0;
+  }
+  if (kind != "object") {
+    return usage_error("describe reads object and session files; " + file + " is a " + kind + " file");
+  }
   if (actees_given && !std::filesystem::is_directory(actee_dir)) {
     // Asked for by name: an empty list would hide the typo.
     throw std::runtime_error("--actees " + actee_dir + ": not a readable directory");
@@ -139,9 +235,9 @@ int describe(const DescribeOptions& o) {
 
 void add_describe(CLI::App& app, Run* run) {
   CLI::App* cmd = app.add_subcommand(
-      "describe", "what the model derives from an object file: lever, advantage, interaction space, fits");
+      "describe", "what the model derives from an object file (lever, advantage, interaction space, fits) or a session (its grips)");
   auto o = std::make_shared<DescribeOptions>();
-  CLI::Option* file = cmd->add_option("FILE", o->file, "an object file (objects/*.yaml)")->type_name(kFile);
+  CLI::Option* file = cmd->add_option("FILE", o->file, "an object file (objects/*.yaml) or a session file (sessions/*.yaml)")->type_name(kFile);
   cmd->add_option("--actees", o->actee_dir, "the folder of actees to fit (default: the shipped actees)")
       ->type_name(kDir);
   cmd->add_flag("--effects", o->effects, "list the optional effects a file can switch on, instead of a FILE")

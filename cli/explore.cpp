@@ -1,7 +1,7 @@
 // afford explore OBJECT [--actees DIR|FILE...] [--agent FILE] [--rules FILE]
 //                [--taxonomy FILE] [--placements N] [--thumbs N] [--efforts N]
-//                [--max-effort N] [--grasps a,b] [--tolerance N] [--threads N]
-//                [--shard K/N] [--out DIR]
+//                [--max-effort N] [--fixed-efforts] [--grasps a,b] [--tolerance N]
+//                [--threads N] [--shard K/N] [--out DIR]
 // afford explore --merge DIR... --out DIR
 // One tool on every actee, placement, thumb position, grasp type and effort
 // (explore/explore.h); prints the summary in words and writes the tables,
@@ -12,6 +12,7 @@
 
 #include "commands.h"
 #include "data_dir.h"
+#include "effort_axes.h"
 #include "explore_json.h"
 #include "option_checks.h"
 #include "parallel.h"
@@ -28,6 +29,7 @@ struct ExploreOptions {
   std::vector<std::string> actees, merge;
   GridOptions grid;
   int threads = 0;
+  bool fixed_efforts = false;
 };
 
 // "K/N" with 1 <= K <= N.
@@ -121,6 +123,7 @@ int explore_command(const ExploreOptions& o) {
   files.actees = actee_files(o.actees);
   GridOptions grid = o.grid;
   grid.grasps = split_commas(o.grasps);
+  grid.scale_efforts = !o.fixed_efforts;
   Shard shard;
   if (!o.shard.empty()) parse_shard(o.shard, &shard);  // checked by its validator
 
@@ -130,10 +133,17 @@ int explore_command(const ExploreOptions& o) {
   } catch (const GridError& error) {
     return usage_error(std::string("explore: ") + error.what());
   }
+  const int threads = o.threads > 0 ? o.threads : default_threads();
+  if (grid.scale_efforts) {
+    TerminalProgress progress("scouting session");  // the common axis, to find where each actee turns
+    fit_effort_axes(e, threads, [&](size_t done, size_t total) {
+      progress.update(static_cast<long long>(done), static_cast<long long>(total));
+    });
+  }
   ExploreResult result;
   {
     TerminalProgress progress("session");
-    result = explore(e, shard, o.threads > 0 ? o.threads : default_threads(),
+    result = explore(e, shard, threads,
                      [&](size_t done, size_t total) { progress.update(static_cast<long long>(done), static_cast<long long>(total)); });
   }
   std::string dir = o.out_dir;
@@ -177,9 +187,11 @@ void add_explore(CLI::App& app, Run* run) {
       ->check(CLI::Range(1, kMaxPerAxis));
   cmd->add_option("--efforts", o->grid.efforts, "efforts from 0 N up to --max-effort (default 9)")
       ->check(CLI::Range(1, kMaxPerAxis));
-  cmd->add_option("--max-effort", o->grid.max_effort, "the largest effort, N (default: the hand's limit)")
+  cmd->add_option("--max-effort", o->grid.max_effort, "the largest effort, the common axis's top, N (default: the hand's limit)")
       ->type_name("N")
       ->check(CLI::Range(1e-3, 1e6));
+  cmd->add_flag("--fixed-efforts", o->fixed_efforts,
+                "every actee on the efforts 0 N to --max-effort, not on its own axis scaled to where it turns");
   cmd->add_option("--grasps", o->grasps, "grasp types tried, comma-separated (default: every type)")
       ->type_name("NAME,...");
   cmd->add_option("--tolerance", o->grid.tolerance, "the thresholds' tolerance, N (default 0.5)")

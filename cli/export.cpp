@@ -24,6 +24,12 @@ struct ExportOptions {
 
 int export_command(const ExportOptions& o) {
   const CompiledSession session = load_session(o.file);  // DataError: file:line:col, exit 1
+  // A scene holds the bodies of one moment: which actee would it hold?
+  if (!session.actee_models.empty()) {
+    throw std::runtime_error(o.file + ": export --mjcf takes a session with one actee; this one lists " +
+                             std::to_string(session.actee_models.size()) +
+                             " ('actees:'): export a session with each alone");
+  }
   const fs::path out = o.out.empty() ? fs::path("out") / (session.name + ".xml") : fs::path(o.out);
   if (out.has_parent_path()) {
     std::error_code ec;

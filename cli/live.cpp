@@ -95,7 +95,7 @@ int live(const LiveOptions& o) {
   std::fflush(stdout);
   auto previous = std::signal(SIGINT, on_interrupt);
   usb->start(std::chrono::steady_clock::now());
-  const RunResult result = run_session(session.model, *session.rules, source, observers);
+  const RunResult result = run_session(session, *session.rules, source, observers);
   usb->stop();
   std::signal(SIGINT, previous);
 

@@ -90,7 +90,7 @@ int replay(const ReplayOptions& o) {
   if (rules_file.empty()) {
     ReplayChecker checker(rec, true);
     const std::vector<Observer*> observers = with_outputs({&checker});
-    const RunResult result = run_session(session.model, *session.rules, source, observers);
+    const RunResult result = run_session(session, *session.rules, source, observers);
     if (json) {
       Json j = {{"recording", rec.file},
                 {"session", rec.session_name},
@@ -121,7 +121,7 @@ int replay(const ReplayOptions& o) {
   ReplayChecker physics(rec, false);  // the state must still be the recorded one
   TimelineCollector rerun(rec.events.size() + 1024);
   const std::vector<Observer*> observers = with_outputs({&physics, &rerun});
-  const RunResult result = run_session(session.model, *rules, source, observers);
+  const RunResult result = run_session(session, *rules, source, observers);
   std::vector<NamedEvent> recorded;
   recorded.reserve(rec.events.size());
   for (const Event& e : rec.events) recorded.push_back(name_event(*session.rules, e));

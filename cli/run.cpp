@@ -78,7 +78,7 @@ void run_once(const CompiledSession& session, const std::string& out_dir, bool j
     std::optional<Recorder> recorder;
     if (!record.empty()) observers.push_back(&recorder.emplace(record, session, "script " + session.file));
     ScriptedAgent agent(session.script);
-    result = run_session(session.model, *session.rules, agent, observers);
+    result = run_session(session, *session.rules, agent, observers);
     if (recorder && !recorder->error().empty()) throw std::runtime_error(recorder->error());
     if (recorder) recorded = recorder->frames();
     closest = progress.progress();

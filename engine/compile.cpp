@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "model.h"
+#include "reach.h"
 #include "stages.h"
 #include "units.h"
 
@@ -103,11 +104,13 @@ void compile_actee(const ActeeSpec& a, const ModelOptions& options, Model& m) {
   m.actee_breaks = a.breaks;
   m.actee_mass = a.mass;
   m.actee_friction = a.friction;
+  m.actee_look = a.look;
   if (!options.actee.in_jaws) {
     m.actee_start = options.actee.world;
     return;
   }
   // Resting on the fixed jaw's inner face (y = 0) at the given distance.
+  m.actee_on_jaw = true;
   const double r = options.actee.distance;
   if (r < m.arm_from || r > m.arm_to) {
     fail(options.actee.loc,
@@ -161,6 +164,7 @@ void compile_agent(const AgentSpec& a, Model& m) {
     tip.loc = a.loc;
     m.fingertip.push_back(Geometry::compile(tip));
   }
+  compile_reach(a, m);  // the fingers' chains (reach.h)
 }
 
 }  // namespace

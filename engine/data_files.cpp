@@ -61,8 +61,20 @@ const MapSchema& actee_entry_schema() {
   return kEntry;
 }
 
-void read_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOptions* options) {
-  MapReader m(node, "the actee", actee_entry_schema());
+const MapSchema& named_actee_entry_schema() {
+  using namespace schema;
+  static const MapSchema kNamed = [] {
+    MapSchema m = actee_entry_schema();
+    m.description = "one of the session's actees and where it is; a script's keyframe takes it by name";
+    m.keys.push_back(optional_key("name", name(), "what the script calls it (default: the actee file's name)"));
+    return m;
+  }();
+  return kNamed;
+}
+
+namespace {
+
+void read_entry(MapReader& m, const Node& node, Files& files, ActeeSpec* actee, ModelOptions* options) {
   *actee = read_actee(files.document(node, "file", m.required("file")));
   if (m.has("at") && m.has("position")) {
     key_node(node, "position").fail("either 'at' (on the fixed jaw) or 'position' (in the world)", "both");
@@ -81,6 +93,21 @@ void read_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOpt
   options->actee.world.linear() = pose.rotation;
   options->actee.world.translation() = pose.position;
   options->actee.loc = key_node(node, "position").loc();
+}
+
+}  // namespace
+
+void read_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOptions* options) {
+  MapReader m(node, "the actee", actee_entry_schema());
+  read_entry(m, node, files, actee, options);
+}
+
+void read_named_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOptions* options,
+                            std::string* name) {
+  MapReader m(node, "an actee of the session", named_actee_entry_schema());
+  read_entry(m, node, files, actee, options);
+  const std::optional<Node> given = m.optional("name");
+  *name = given ? read_name(*given) : actee->name;
 }
 
 }  // namespace afford

@@ -42,5 +42,10 @@ class Files {
 // The keys of that mapping (schema.h).
 const MapSchema& actee_entry_schema();
 void read_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOptions* options);
+// An entry of a session's `actees:`: the same, and an optional `name` by
+// which the script takes it (default: the actee file's own name).
+const MapSchema& named_actee_entry_schema();
+void read_named_actee_entry(const Node& node, Files& files, ActeeSpec* actee, ModelOptions* options,
+                            std::string* name);
 
 }  // namespace afford

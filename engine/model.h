@@ -102,6 +102,8 @@ struct Model {
   double actee_mass = 0;        // kg
   double actee_friction = 0;    // mu, static, of the actee on the jaws: the grip that carries its weight
   Eigen::Isometry3d actee_start = Eigen::Isometry3d::Identity();  // world
+  bool actee_on_jaw = false;    // placed on the fixed jaw (`at:`), not at a pose in the world
+  ActeeLook actee_look;         // how the renderer draws it (actee_look.h)
 
   // agent (Fig. 8); absent when has_agent is false
   bool has_agent = false;
@@ -112,6 +114,14 @@ struct Model {
   std::array<double, kFingers> tip_radius{};  // m
   std::vector<Geometry> fingertip;            // one sphere per finger
   std::array<std::array<double, kJoints>, kFingers> joint_min{}, joint_max{};  // rad
+  // Reach (reach.h); has_reach false: the agent file gives no chains and
+  // the fingertips are not limited.
+  bool has_reach = false;
+  std::string agent_file;                                      // where the chains were written, for errors
+  std::array<Eigen::Vector3d, kFingers> finger_base{};         // m, hand frame: the chain's first joint
+  std::array<std::array<double, kJoints>, kFingers> link{};    // m, [distal, proximal, metacarpal]
+  std::array<double, kFingers> chain_min{}, chain_max{};       // m, the tip's distance from the base
+  std::array<double, kFingers> reach_min{}, reach_max{};       // m, the tip's distance from the wrist
 
   // grasp taxonomy (Fig. 7), per type in file order; empty: none (the grasp
   // is decided by contact alone). See classify_grasp() in grasps.h.

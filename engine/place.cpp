@@ -1,4 +1,5 @@
 // Stage 1: place the bodies, and keep the actee's contact angle current.
+#include "reach.h"
 #include "stages.h"
 
 namespace afford {
@@ -39,6 +40,24 @@ void refresh_contact_angle(const Model& m, State& s) {
   s.actee_thickness = thickness_across_jaws(m, rel);
 }
 
+// A fingertip stops at its reach (reach.h): a sample beyond it (from a
+// device, a recording, or a generated script; a session's keyframes are
+// checked when it loads) leaves the tip at the nearest point the finger
+// can take, and reach_short says how far the sample asked. While the hand
+// grasps the tool the thumb's sample is the hand impedance's target, which
+// runs ahead of the arm by design (agents/README.md), not a place: kept.
+void keep_within_reach(const Model& m, State& s) {
+  s.reach_short.fill(0.0);
+  if (!m.has_reach) return;
+  const Eigen::Isometry3d to_hand = s.hand.inverse();
+  for (int f = s.grasped ? 1 : 0; f < kFingers; ++f) {
+    const size_t i = static_cast<size_t>(f);
+    const Eigen::Vector3d tip = to_hand * s.fingertip[i];
+    s.reach_short[i] = reach_short(m, f, tip);
+    if (s.reach_short[i] > 0) s.fingertip[i] = s.hand * nearest_reachable(m, f, tip);
+  }
+}
+
 }  // namespace
 
 double thickness_across_jaws(const Model& m, const Eigen::Isometry3d& actee_in_object) {
@@ -53,6 +72,7 @@ void place_bodies(const Model& m, State& s, const Sample& sample) {
   s.t = sample.t;
   s.hand = sample.hand;
   s.fingertip = sample.fingertip;
+  keep_within_reach(m, s);
   // Fig. 7; -1 without a taxonomy. A posture held from the last frame keeps its type.
   const bool posture_changed = s.frame == 0 || !(sample.joint == s.joint);
   s.joint = sample.joint;

@@ -328,7 +328,7 @@ CaseRun run_case_session(const CompiledSession& session, const AgentFactory& age
   if (!source) throw LogicError("run_case_session: the agent factory gave no source");
   ProgressObserver progress;
   Observer* const observers[] = {&progress};
-  RunResult result = run_session(session.model, *session.rules, *source, observers);
+  RunResult result = run_session(session, *session.rules, *source, observers);
   CaseRun run;
   run.inferences = std::move(result.inferences);
   run.progress = progress.progress();

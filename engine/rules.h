@@ -81,6 +81,9 @@ std::vector<Inference> inferences(const RuleSet& rules, const RuleState& rs);
 // Names for reporting.
 int function_count(const RuleSet& rules);
 const std::string& function_name(const RuleSet& rules, int function);
+// The function's rank in the file's `strength` list (0 the weakest; without
+// the list, its place in the file): which of two is the stronger outcome.
+int function_strength(const RuleSet& rules, int function);
 int node_count(const RuleSet& rules, int function);
 const std::string& node_text(const RuleSet& rules, int function, int node);  // the `when` as written
 SourceLoc node_loc(const RuleSet& rules, int function, int node);

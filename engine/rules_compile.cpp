@@ -1,6 +1,7 @@
 // rules/functions.yaml -> RuleSet: every `when` parsed, type-checked with
 // units, and compiled into one flat program in which an expression written
 // several times (in one function or in several) has one slot.
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <tuple>
@@ -213,6 +214,29 @@ void order_by_requirement(RuleSet& rules, const std::vector<std::vector<int>>& r
   rules.functions = std::move(sorted);
 }
 
+// `strength`: every function once, weakest first (afford explore reports a
+// point by the strongest function it reached). Without it, file order.
+void read_strength(MapReader& top, const std::vector<std::string>& names, RuleSet& rules) {
+  for (size_t i = 0; i < rules.functions.size(); ++i) rules.functions[i].strength = static_cast<int>(i);
+  const std::optional<Node> list = top.optional("strength");
+  if (!list) return;
+  if (!list->is_sequence()) list->fail("a sequence of the function names, weakest first, e.g. [pinch, hold]");
+  std::vector<bool> listed(names.size(), false);
+  for (size_t j = 0; j < list->size(); ++j) {
+    const Node item = (*list)[j];
+    const std::string n = read_name(item);
+    const auto it = std::find(names.begin(), names.end(), n);
+    if (it == names.end()) item.fail("the name of a function in this file", "'" + n + "'" + did_you_mean(n, names));
+    const size_t f = static_cast<size_t>(it - names.begin());
+    if (listed[f]) item.fail("each function once", "'" + n + "' again");
+    listed[f] = true;
+    rules.functions[f].strength = static_cast<int>(j);
+  }
+  for (size_t f = 0; f < names.size(); ++f) {
+    if (!listed[f]) list->fail("every function of the file, once", "no '" + names[f] + "'");
+  }
+}
+
 const MapSchema& condition_schema() {
   using namespace schema;
   static const MapSchema kCondition{
@@ -297,6 +321,7 @@ std::shared_ptr<const RuleSet> compile_rules(const Node& root) {
     }
     rules->functions.push_back(std::move(fn));
   }
+  read_strength(top, names, *rules);
   order_by_requirement(*rules, required);
   return rules;
 }
@@ -307,9 +332,14 @@ const MapSchema& functions_schema() {
   using namespace schema;
   static const MapSchema kFunctions{
       "a function-model file: the functions afford infers (rules/README.md)",
-      {required_key("functions", sequence(mapping(function_model_schema()), 1), "the function models")}};
+      {required_key("functions", sequence(mapping(function_model_schema()), 1), "the function models"),
+       optional_key("strength", sequence(name()),
+                    "every function once, weakest first: afford explore reports a point by the strongest it "
+                    "reached (default: the order of the file)")}};
   return kFunctions;
 }
+
+int function_strength(const RuleSet& rules, int f) { return rules.functions[static_cast<size_t>(f)].strength; }
 
 std::shared_ptr<const RuleSet> load_rules(const std::string& path) { return compile_rules(load_yaml_file(path)); }
 

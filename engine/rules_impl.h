@@ -50,6 +50,7 @@ struct RuleFunction {
   SourceLoc loc;
   std::vector<RuleNode> nodes;
   int value_count = 0;  // values recorded per reach of all its nodes
+  int strength = 0;     // rank in the file's `strength` list, 0 the weakest
 };
 
 struct RuleSet {

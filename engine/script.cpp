@@ -3,10 +3,12 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "did_you_mean.h"
 #include "grasps.h"
 #include "load.h"
+#include "squeeze.h"
 #include "units.h"
 
 namespace afford {
@@ -31,6 +33,15 @@ Node key_node(const Node& map, std::string_view key) {
   return map;
 }
 
+const MapSchema& squeeze_until_schema() {
+  using namespace schema;
+  static const MapSchema kUntil{
+      "squeeze until a force, in the lever's static balance (engine/squeeze.h)",
+      {required_key("until", choice({"actee_force", "effort"}), "the force: the actee's, or the hand's effort"),
+       required_key("value", quantity(dim::force), "the force reached, above 0")}};
+  return kUntil;
+}
+
 const MapSchema& grip_schema() {
   using namespace schema;
   static const MapSchema kGrip{
@@ -39,7 +50,8 @@ const MapSchema& grip_schema() {
                     "the thumb on the moving arm's outer face, at this signed distance"),
        required_key("index", any_of({quantity(dim::length), choice({"none"})}),
                     "the index on the fixed arm's outer face at this distance, or none"),
-       required_key("squeeze", quantity(dim::length), "how far the thumb is advanced past the rest angle, 0 or more")}};
+       required_key("squeeze", any_of({quantity(dim::length), mapping(squeeze_until_schema())}),
+                    "how far the thumb is advanced past the rest angle (0 or more), or the force it squeezes until")}};
   return kGrip;
 }
 
@@ -86,7 +98,14 @@ GripSpec read_grip(const Node& node) {
   }
   const Node squeeze = m.required("squeeze");
   g.squeeze_loc = squeeze.loc();
-  g.squeeze = read_non_negative(squeeze, dim::length);
+  if (squeeze.is_map()) {
+    MapReader until(squeeze, "the squeeze", squeeze_until_schema());
+    const std::string by = read_choice(until.required("until"), {"actee_force", "effort"});
+    g.squeeze_by = by == "actee_force" ? SqueezeBy::actee_force : SqueezeBy::effort;
+    g.until = read_positive(until.required("value"), dim::force);
+  } else {
+    g.squeeze = read_non_negative(squeeze, dim::length);
+  }
   return g;
 }
 
@@ -118,12 +137,20 @@ const MapSchema& keyframe_schema() {
   using namespace schema;
   static const MapSchema kKeyframe{
       "a keyframe: later keyframes carry forward what they omit",
-      {required_key("t", quantity(dim::time), "the keyframe's time, after the previous one's"),
+      {optional_key("t", quantity(dim::time), "the keyframe's time, after the previous one's"),
+       optional_key("after", quantity(dim::time), "the keyframe's time as a wait after the previous one's (or 0 s)"),
+       optional_key("hold", quantity(dim::time), "alone: everything held still this long after the previous keyframe"),
+       optional_key("release", boolean(),
+                    "true: the fingers leave the tool, curled into the palm, by this keyframe (not with grip or "
+                    "fingertips)"),
+       optional_key("actee", name(), "the session's actee (of its `actees:`) on the tool from this keyframe on"),
        optional_key("hand", mapping(hand_schema()), "the hand's pose (required in the first keyframe)"),
        optional_key("grip", mapping(grip_schema()), "thumb and index on the arms (or fingertips)"),
        optional_key("fingertips", mapping(fingertips_schema()), "every fingertip's target (or grip)"),
        optional_key("posture", any_of({name(), mapping(posture_schema())}),
-                    "a grasp type's name, or every finger's joint angles")}};
+                    "a grasp type's name, or every finger's joint angles")},
+      false,
+      {{"t", "after", "hold"}}};
   return kKeyframe;
 }
 
@@ -144,12 +171,37 @@ KeyframeSpec read_keyframe(const Node& node, const KeyframeSpec* previous) {
   MapReader m(node, "a keyframe", keyframe_schema());
   KeyframeSpec k;
   k.loc = node.loc();
-  const Node t = m.required("t");
+  // The time: `t`, or a wait after the previous keyframe (`after`, or
+  // `hold` for a keyframe that changes nothing).
+  const int timings = (m.has("t") ? 1 : 0) + (m.has("after") ? 1 : 0) + (m.has("hold") ? 1 : 0);
+  if (timings == 0) node.fail("key 't' (or 'after' or 'hold': the keyframe's time)", "none of them");
+  if (timings > 1) {
+    key_node(node, m.has("after") && m.has("t") ? "after" : "hold")
+        .fail("one of t, after and hold (the keyframe's time)", "two of them");
+  }
+  const char* const timing = m.has("t") ? "t" : (m.has("after") ? "after" : "hold");
+  const Node t = m.required(timing);
   k.t_loc = t.loc();
-  k.t = read_quantity(t, dim::time);
+  const double since = previous == nullptr ? 0.0 : previous->t;
+  k.t = std::string_view(timing) == "t" ? read_quantity(t, dim::time) : since + read_positive(t, dim::time);
   if (previous == nullptr && k.t < 0) t.fail("a time of 0 s or more");
   if (previous != nullptr && !(k.t > previous->t)) {
     t.fail("a time after the previous keyframe's (" + format_quantity(previous->t, dim::time) + ")");
+  }
+  if (m.has("hold") && m.entries().size() > 1) {
+    key_node(node, m.entries()[m.entries()[0].first == "hold" ? 1 : 0].first)
+        .fail("nothing beside 'hold' (it holds everything still; use 'after' to change something after a wait)",
+              "more keys");
+  }
+  if (std::optional<Node> release = m.optional("release")) {
+    if (!read_bool(*release)) release->fail("true (leave the key out to keep the fingers where they are)", "false");
+    if (previous == nullptr) release->fail("a keyframe after the first (the first places the fingers)", "release");
+    if (m.has("grip") || m.has("fingertips")) {
+      release->fail("release alone or with hand and posture (it takes the fingers off the tool)",
+                    "release with grip or fingertips");
+    }
+    k.fingers = FingerSource::fingertips;
+    k.fingertip = kCurledFingertip;
   }
   if (std::optional<Node> hand = m.optional("hand")) {
     MapReader h(*hand, "the hand", hand_schema());
@@ -171,6 +223,10 @@ KeyframeSpec read_keyframe(const Node& node, const KeyframeSpec* previous) {
     }
   }
   if (std::optional<Node> posture = m.optional("posture")) read_posture(*posture, k);
+  if (std::optional<Node> actee = m.optional("actee")) {
+    k.actee = read_name(*actee);
+    k.actee_loc = actee->loc();
+  }
   if (previous == nullptr) {
     const char* const kWhy = " in the first keyframe (it gives hand, grip or fingertips, and posture; later "
                              "keyframes carry forward what they omit)";
@@ -263,6 +319,31 @@ JointAngles named_posture(const Model& m, const KeyframeSpec& k) {
   fail(k.posture_loc, expected + ")", "'" + k.posture_name + "'" + did_you_mean(k.posture_name, names));
 }
 
+// A squeeze given as a force, as the thumb's advance that reaches it
+// (squeeze.h), within the hand's largest effort and its grasp's.
+double squeeze_until(const Model& m, const GripSpec& grip, const JointAngles& joint, const ForcedLever& lever) {
+  double cap = m.max_force;
+  std::string whose = "the agent's";
+  const int type = m.grasp_name.empty() ? -1 : classify_grasp(m, joint);
+  if (type >= 0 && m.grasp_max_force[static_cast<size_t>(type)] < cap) {
+    cap = m.grasp_max_force[static_cast<size_t>(type)];
+    whose = "the grasp " + m.grasp_name[static_cast<size_t>(type)] + "'s";
+  }
+  double effort = grip.until;
+  if (grip.squeeze_by == SqueezeBy::effort && effort > cap) {
+    fail(grip.squeeze_loc, "an effort within " + whose + " largest, " + format_quantity(cap, dim::force),
+         format_quantity(effort, dim::force));
+  }
+  std::string why;
+  if (grip.squeeze_by == SqueezeBy::actee_force &&
+      !effort_for_actee_force(m, lever, grip.thumb, grip.until, cap, &effort, &why)) {
+    fail(grip.squeeze_loc, "an actee force the hand reaches (" + whose + " largest effort is " +
+                               format_quantity(cap, dim::force) + ")",
+         format_quantity(grip.until, dim::force) + ": " + why);
+  }
+  return squeeze_for_effort(m, lever, grip.thumb, effort);
+}
+
 }  // namespace
 
 ScriptSpec read_script(const Node& sequence) {
@@ -341,16 +422,23 @@ bool grasp_posture(const Model& m, int type, JointAngles* out, std::string* why)
   return true;
 }
 
-Script compile_script(const ScriptSpec& spec, const Model& m) {
-  if (!m.has_agent) throw LogicError("compile_script() needs a model with its agent");
+Script compile_script(const ScriptSpec& spec, const Model& first, std::span<const Model> actee_models) {
+  if (!first.has_agent) throw LogicError("compile_script() needs a model with its agent");
+  const Model* in_play = &first;  // the model of the actee on the tool at this keyframe
   Script script;
   script.keyframes.reserve(spec.keyframes.size());
-  Eigen::Isometry3d object_world = m.object_start;  // where the script expects the tool
+  Eigen::Isometry3d object_world = first.object_start;  // where the script expects the tool
   Eigen::Isometry3d object_in_hand = Eigen::Isometry3d::Identity();
   bool holding = false;  // the last keyframe grasped the tool: a finger on the fixed arm, a grasp posture
   Keyframe current;
   const GripSpec* grip = nullptr;  // the grip in force, if the fingers come from one
+  std::optional<ForcedLever> lever;  // the lever at the start, once a squeeze is given as a force
   for (const KeyframeSpec& k : spec.keyframes) {
+    if (k.actee_index >= 0) {
+      in_play = &actee_models[static_cast<size_t>(k.actee_index)];
+      lever.reset();  // a squeeze by force is the new actee's
+    }
+    const Model& m = *in_play;
     current.t = k.t;
     if (k.has_hand) {
       current.hand_position = k.hand.position;
@@ -373,7 +461,12 @@ Script compile_script(const ScriptSpec& spec, const Model& m) {
     current.grip = grip != nullptr;
     if (grip != nullptr) {
       Eigen::Vector3d index = Eigen::Vector3d::Zero();
-      grip_points(m, *grip, &current.thumb_rest, &current.thumb_angle, &index);
+      GripSpec resolved = *grip;
+      if (grip->squeeze_by != SqueezeBy::distance) {
+        if (!lever) lever = lever_at_start(m);
+        resolved.squeeze = squeeze_until(m, *grip, current.joint, *lever);
+      }
+      grip_points(m, resolved, &current.thumb_rest, &current.thumb_angle, &index);
       const bool grasps = grip->has_index && posture_grasps;
       if (grasps && holding) {
         object_world = hand * object_in_hand;  // grasped: the tool moves with the hand

@@ -7,8 +7,13 @@
 //
 // A keyframe (a mapping in the session's `script:` sequence):
 //
-//   t: 1.5 s                     time, required, strictly increasing, the
-//                                first >= 0
+//   t: 1.5 s                     time, strictly increasing, the first >= 0;
+//                                or instead `after: 0.5 s` (a wait after the
+//                                previous keyframe), or `hold: 0.5 s` alone
+//                                (everything held still that long)
+//   release: true                the fingers curl off the tool into the
+//                                palm (kCurledFingertip) by this keyframe;
+//                                not with grip or fingertips
 //   hand: {position: [x, y, z], rotation: [rx, ry, rz]}
 //                                world pose of the hand frame; rotation
 //                                optional (three angles about the world
@@ -20,9 +25,15 @@
 //                                index on the fixed arm's outer face (or
 //                                `index: none`), and the thumb advanced
 //                                `squeeze` (>= 0) along the rotation
-//                                direction past the rest angle
+//                                direction past the rest angle, or
+//                                `squeeze: {until: actee_force | effort,
+//                                value: 150 N}`: the squeeze at which the
+//                                lever settles with that force (squeeze.h)
 //   fingertips: {thumb: [x, y, z], index: ..., middle: ..., ring: ...,
 //                little: ...}    every fingertip centre in the hand frame
+//   actee: hazelnut              in a session with several actees, the one
+//                                on the tool from this keyframe on
+//                                (session.h)
 //   posture: medium_wrap         a grasp type of the model's grasp taxonomy
 //                                (rules/grasps.yaml): every joint at the
 //                                middle of the type's range and the agent's;
@@ -77,6 +88,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -97,11 +109,16 @@ using JointAngles = std::array<std::array<double, kJoints>, kFingers>;  // rad, 
 
 // ------------------------------------------------------------ spec
 
+// What a grip's `squeeze:` gives: a distance, or a force it squeezes until.
+enum class SqueezeBy { distance, actee_force, effort };
+
 struct GripSpec {
   double thumb = 0;       // m, signed distance along the moving arm
   bool has_index = true;  // false: `index: none`
   double index = 0;       // m, signed distance along the fixed arm
-  double squeeze = 0;     // m, >= 0, the thumb's advance past the rest angle
+  double squeeze = 0;     // m, >= 0, the thumb's advance past the rest angle (SqueezeBy::distance)
+  SqueezeBy squeeze_by = SqueezeBy::distance;
+  double until = 0;       // N, the actee's force or the effort squeezed until (the others)
   SourceLoc thumb_loc, index_loc, squeeze_loc;
 };
 
@@ -121,6 +138,9 @@ struct KeyframeSpec {
   JointAngles joint{};  // rad (angles)
   SourceLoc posture_loc;
   std::array<std::array<SourceLoc, kJoints>, kFingers> joint_loc{};
+  std::string actee;         // `actee:` the session's actee taken from this keyframe on ("" none)
+  SourceLoc actee_loc;
+  int actee_index = -1;      // its index in the session's `actees:` (set by the session)
 };
 
 struct ScriptSpec {
@@ -172,7 +192,10 @@ struct Script {
 // posture names against the model's grasp taxonomy. Throws DataError: a
 // grip distance off its arm, an unknown posture name (with "did you
 // mean"), a joint angle outside the agent's range.
-Script compile_script(const ScriptSpec& spec, const Model& model);
+// `actee_models`: a session's actees, one model each (the same tool and
+// hand), indexed by KeyframeSpec::actee_index: a squeeze until an actee's
+// force is computed with the actee on the tool then.
+Script compile_script(const ScriptSpec& spec, const Model& model, std::span<const Model> actee_models = {});
 
 // The posture that stands for grasp type `type` of the model's taxonomy:
 // each joint the type constrains at the middle of the type's range within

@@ -5,6 +5,10 @@
 //   session: paper-tongs           name (first key: the kind of file)
 //   description: ...               one line
 //   object: ../objects/tongs.yaml  a path, or an object file's content in place
+//   actees:                        or instead several, each as `actee:` with an
+//     - {file: ..., at: 60 mm, name: first}   optional name (default the file's);
+//     - {file: ..., at: 60 mm}     the first is on the tool at the start, a
+//                                  keyframe's `actee: NAME` takes another
 //   actee:                         optional: a session may have no actee
 //     file: ../actees/egg.yaml     a path, or an actee file's content in place
 //     at: 212 mm                   resting on the fixed jaw at this signed
@@ -36,6 +40,7 @@
 
 #include "model.h"
 #include "rules.h"
+#include "run.h"
 #include "script.h"
 #include "setup_warnings.h"
 #include "yaml_reader.h"
@@ -51,6 +56,12 @@ struct SessionCamera {
   double fov = 0.6981317007977318;                     // rad, vertical field of view (40 deg)
 };
 
+// When a session with several actees takes another (a keyframe's `actee:`).
+struct ActeeChange {
+  double t = 0;      // s, the keyframe's time
+  size_t actee = 0;  // index into CompiledSession::actee_models
+};
+
 struct CompiledSession {
   std::string file;         // the session file as named
   std::string name;         // `session:`
@@ -61,7 +72,19 @@ struct CompiledSession {
   SessionCamera camera;     // `camera:`, optional
   std::vector<std::string> files;  // every file read, the session first (for --watch)
   std::vector<Warning> warnings;   // what the hand can never do (setup_warnings.h)
+  // `actees:`, several actees: each one's model (the tool and the hand the
+  // same), its name, and when the script takes it; `model` is the one on the
+  // tool at the start. Empty with `actee:` or none.
+  std::vector<Model> actee_models;
+  std::vector<std::string> actee_names;
+  std::vector<ActeeChange> actee_changes;  // in time order
+  size_t first_actee = 0;                  // the one on the tool at the start
 };
+
+// Runs a compiled session: its model and rules, taking each of several
+// actees when its script says (run.h's run_session otherwise).
+RunResult run_session(const CompiledSession& session, const RuleSet& rules, SampleSource& source,
+                      std::span<Observer* const> observers = {});
 
 CompiledSession load_session(const std::string& path);
 

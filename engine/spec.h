@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "actee_look.h"
 #include "effects.h"
 #include "errors.h"
 
@@ -135,6 +136,7 @@ struct ActeeSpec {
   double friction = 0;                  // its coefficient of static friction on the jaws (mu, > 0)
   std::string friction_source;          // where the coefficient was published
   std::vector<EffectSpec> effects;      // actee_compliance
+  ActeeLook look;                       // how it is drawn (renderer only)
   SourceLoc loc, limit_loc;
 };
 
@@ -149,6 +151,10 @@ struct FingerSpec {
   double tip_radius = 0;                   // m
   std::array<double, kJoints> joint_min{};  // rad
   std::array<double, kJoints> joint_max{};  // rad
+  // Its chain (agents/README.md, `reach`): where it starts, in the hand
+  // frame, and the link each joint turns, [distal, proximal, metacarpal].
+  Eigen::Vector3d base = Eigen::Vector3d::Zero();  // m
+  std::array<double, kJoints> link{};              // m, > 0 (has_reach)
 };
 
 struct AgentSpec {
@@ -159,6 +165,7 @@ struct AgentSpec {
   double max_force = 0;   // N: the largest effort force the hand can exert
   double damping = 0;     // N*s/m: the hand impedance's damping (optional key; 0: none)
   std::array<FingerSpec, kFingers> fingers;
+  bool has_reach = false;  // the file gives `reach`: each finger's base and links
   SourceLoc loc;
 };
 

@@ -22,6 +22,24 @@ const char* condition_name(ActeeCondition c) {
   return "?";
 }
 
+namespace {
+
+// The actee at `world`, every field of it as at the start.
+void place_actee(const Model& m, const Eigen::Isometry3d& world, State& s) {
+  s.actee_pose = world;
+  s.actee_start_position = world.translation();
+  s.actee_in_object = s.object_pose.inverse() * world;
+  s.placed_object = s.object_pose;
+  s.placed_actee = s.actee_pose;
+  s.between_jaws = find_contact_angle(m, s.actee_in_object, *s.query, &s.contact_angle, &s.load_distance,
+                                      &s.jaw_contact) == JawFit::fits;
+  if (!s.between_jaws) s.load_distance = 0;
+  s.actee_thickness = thickness_across_jaws(m, s.actee_in_object);
+  s.grip_margin = grip_margin(m.actee_friction, m.actee_friction, m.actee_mass, 0);
+}
+
+}  // namespace
+
 std::unique_ptr<State> make_state(const Model& model) {
   auto state = std::make_unique<State>();
   state->query = std::make_unique<ContactQuery>();
@@ -39,22 +57,31 @@ void reset(const Model& m, State& s) {
   s.part_pose.resize(m.parts.size());
   s.part_box.resize(m.parts.size());
   if (m.has_actee) {
-    s.actee_pose = m.actee_start;
-    s.actee_start_position = m.actee_start.translation();
-    s.actee_in_object = m.object_start.inverse() * m.actee_start;
-    s.placed_object = s.object_pose;
-    s.placed_actee = s.actee_pose;
     s.jaw_contact.assign(m.parts.size(), JawContact{});
-    s.between_jaws = find_contact_angle(m, s.actee_in_object, *s.query, &s.contact_angle, &s.load_distance,
-                                        &s.jaw_contact) == JawFit::fits;
-    if (!s.between_jaws) s.load_distance = 0;
-    s.actee_thickness = thickness_across_jaws(m, s.actee_in_object);
-    s.grip_margin = grip_margin(m.actee_friction, m.actee_friction, m.actee_mass, 0);
+    place_actee(m, m.actee_start, s);
   }
   // The delay in whole frames and one more, to interpolate between two.
   if (m.sensor_latency > 0) {
     s.effort_history.assign(static_cast<size_t>(std::ceil(m.sensor_latency / m.timestep)) + 2, 0.0);
   }
+}
+
+void change_actee(const Model& m, State& s) {
+  if (!m.has_actee) throw LogicError("change_actee() needs a model with an actee");
+  s.actee_speed = 0;
+  s.actee_anchor = Eigen::Vector3d::Zero();
+  s.actee_in_hand = false;
+  s.hand_to_actee = Eigen::Isometry3d::Identity();
+  s.blocked = false;
+  s.actee_force = s.actee_load = s.actee_compression = s.peak_actee_load = 0;
+  s.condition = ActeeCondition::intact;
+  s.broke_at = -1;
+  s.held = false;
+  s.object_actee = ContactSet{};
+  s.actee_arms = 0;
+  s.agent_actee = ContactSet{};
+  for (JawContact& c : s.jaw_contact) c = JawContact{};
+  place_actee(m, m.actee_on_jaw ? s.object_pose * (m.object_start.inverse() * m.actee_start) : m.actee_start, s);
 }
 
 void step(const Model& m, State& s, const Sample& sample) {

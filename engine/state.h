@@ -69,6 +69,7 @@ struct State {
   Eigen::Isometry3d actee_pose = Eigen::Isometry3d::Identity();   // world from actee frame
   Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();         // world, from the sample
   std::array<Eigen::Vector3d, kFingers> fingertip{};              // m, world
+  std::array<double, kFingers> reach_short{};  // m, how far the sample asked each tip beyond its reach, where it stopped (reach.h); 0: within
   std::array<std::array<double, kJoints>, kFingers> joint{};      // rad
   int grasp_type = -1;  // the posture's type in the model's taxonomy this frame; -1: none
   double hand_speed = 0;    // m/s, of the hand's origin
@@ -151,6 +152,14 @@ struct State {
 // A fresh state for the model: bodies at their start poses, lever at rest.
 std::unique_ptr<State> make_state(const Model& model);
 void reset(const Model& model, State& state);
+
+// Another actee takes the last one's place (a session with several
+// actees, when its script takes the next): every actee field as reset()
+// leaves it. One placed on the fixed jaw goes there on the tool as the
+// tool is now (the subject puts it into the tool wherever it is); one
+// placed in the world, there. The tool and the hand go on as they were.
+// `model` is the new actee's (the same tool and hand). Allocates nothing.
+void change_actee(const Model& model, State& state);
 
 // One frame (paper Sec. 4.3): place, the grasp, the lever-spring solver,
 // the actee, then the contacts at the solved angle.

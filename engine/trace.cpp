@@ -110,7 +110,9 @@ std::string json_string(const std::string& s) {
   return out + "\"";
 }
 
-void TimelineWriter::on_start(const Model&, const State&, const RuleSet& rules) {
+void TimelineWriter::on_start(const Model& model, const State&, const RuleSet& rules) {
+  model_ = &model;
+  out_of_reach_.fill(false);
   function_json_.clear();
   node_json_.clear();
   for (int f = 0; f < function_count(rules); ++f) {
@@ -121,8 +123,24 @@ void TimelineWriter::on_start(const Model&, const State&, const RuleSet& rules) 
   }
 }
 
-void TimelineWriter::on_frame(const Model&, const State&, const RuleSet&, const RuleState& rs) {
+void TimelineWriter::on_frame(const Model& model, const State& state, const RuleSet&, const RuleState& rs) {
   static const char* const kKinds[] = {"node_reached", "node_lost", "inferred"};
+  // Actee names are names (read_name): nothing in them to escape.
+  if (&model != model_) {
+    std::fprintf(out_, "{\"t\":%.6f,\"event\":\"actee\",\"actee\":\"%s\"}\n", state.t, model.actee_name.c_str());
+    model_ = &model;
+  }
+  for (size_t f = 0; f < kFingers; ++f) {
+    const bool out = state.reach_short[f] > 0;
+    if (out == out_of_reach_[f]) continue;
+    out_of_reach_[f] = out;
+    if (out) {
+      std::fprintf(out_, "{\"t\":%.6f,\"event\":\"out_of_reach\",\"finger\":\"%s\",\"short_m\":%.6g}\n", state.t,
+                   kFingerNames[f], state.reach_short[f]);
+    } else {
+      std::fprintf(out_, "{\"t\":%.6f,\"event\":\"within_reach\",\"finger\":\"%s\"}\n", state.t, kFingerNames[f]);
+    }
+  }
   for (const Event* e = events_begin(rs); e != events_end(rs); ++e) {
     const size_t f = static_cast<size_t>(e->function);
     const std::vector<std::string>& nodes = node_json_[f];

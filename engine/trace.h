@@ -27,6 +27,7 @@
 // (the rest), written without printf (number_format.h).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -75,6 +76,8 @@ class TimelineWriter : public Observer {
 
  private:
   std::FILE* out_;
+  const Model* model_ = nullptr;           // the model of the last frame: another is another actee
+  std::array<bool, kFingers> out_of_reach_{};  // per finger, beyond its reach at the last frame
   // Escaped JSON strings, built once in on_start: per function its name,
   // per function and node its text.
   std::vector<std::string> function_json_;

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "derive.h"
+#include "grid_axis.h"
+#include "outcome.h"
 #include "did_you_mean.h"
 #include "errors.h"
 #include "grasps.h"
@@ -16,14 +19,6 @@
 namespace afford {
 namespace {
 
-// n values spread evenly over [from, to], ends included; one: the middle.
-std::vector<double> spread(double from, double to, int n) {
-  std::vector<double> v;
-  if (n == 1) return {0.5 * (from + to)};
-  for (int i = 0; i < n; ++i) v.push_back(from + (to - from) * i / (n - 1));
-  return v;
-}
-
 void check_count(int n, const char* what) {
   if (n < 1 || n > kMaxPerAxis) {
     throw GridError(std::string(what) + ": expected a count from 1 to " + std::to_string(kMaxPerAxis) + ", found " +
@@ -31,24 +26,29 @@ void check_count(int n, const char* what) {
   }
 }
 
-// Watches a point's session: the peaks, whether the actee broke, and when
-// each function was first inferred (from the frame's events, without the
-// explanations).
+// Watches a point's session: the peaks, whether the actee broke, when each
+// function was first inferred and which were reached while the effort was
+// applied (from the frame's events, without the explanations).
 class PointObserver : public Observer {
  public:
-  explicit PointObserver(PointResult* r) : r_(r) {}
+  PointObserver(PointResult* r, std::vector<int> strength, double applied_at)
+      : r_(r), watch_(std::move(strength), applied_at) {}
   void on_frame(const Model&, const State& s, const RuleSet&, const RuleState& rs) override {
     r_->peak_effort = std::max(r_->peak_effort, s.effort_force);
     r_->peak_actee_force = std::max(r_->peak_actee_force, s.actee_force);
-    if (r_->broke_at < 0 && s.condition == ActeeCondition::broken) r_->broke_at = s.t;
+    const bool broken = s.condition == ActeeCondition::broken;
+    if (r_->broke_at < 0 && broken) r_->broke_at = s.t;
     for (const Event* ev = events_begin(rs); ev != events_end(rs); ++ev) {
       double& first = r_->first[static_cast<size_t>(ev->function)];
-      if (ev->kind == EventKind::inferred && first < 0) first = ev->t;
+      if (ev->kind == EventKind::inferred && first < 0) first = tidy(ev->t);
     }
+    watch_.frame(s.t, events_begin(rs), events_end(rs), broken, s.grasped);
   }
+  const OutcomeWatch& watch() const { return watch_; }
 
  private:
   PointResult* r_;
+  OutcomeWatch watch_;
 };
 
 }  // namespace
@@ -69,7 +69,10 @@ Explorer make_explorer(const ExploreFiles& files, const GridOptions& grid) {
   ModelOptions options;
   options.grasps = load_grasps(files.grasps);
   e.rules = load_rules(files.rules);
-  for (int f = 0; f < function_count(*e.rules); ++f) g.functions.push_back(function_name(*e.rules, f));
+  for (int f = 0; f < function_count(*e.rules); ++f) {
+    g.functions.push_back(function_name(*e.rules, f));
+    g.strength.push_back(function_strength(*e.rules, f));
+  }
 
   // The tool and hand alone: the regions, the taxonomy, the hand's limits.
   const Model bare = compile(object, nullptr, &agent, options);
@@ -123,15 +126,16 @@ Explorer make_explorer(const ExploreFiles& files, const GridOptions& grid) {
     const ActeeFit fit = fit_actee(compile(object, &a, &agent, anywhere));
     entry.fits = fit.fits;
     entry.why = fit.why;
+    if (fit.fits) entry.efforts = g.efforts;  // until fit_effort_axes() scales it
     std::vector<std::shared_ptr<const Model>> models;
-    std::vector<JawsAtRest> jaws;
+    std::vector<ForcedLever> jaws;
     if (fit.fits) {
       entry.placements = spread(fit.from, fit.to, grid.placements);
       for (double at : entry.placements) {
         ModelOptions placed = options;
         placed.actee.distance = at;
         models.push_back(std::make_shared<const Model>(compile(object, &a, &agent, placed)));
-        jaws.push_back(jaws_at_rest(*models.back()));
+        jaws.push_back(lever_at_start(*models.back()));
       }
     }
     g.actees.push_back(std::move(entry));
@@ -142,6 +146,7 @@ Explorer make_explorer(const ExploreFiles& files, const GridOptions& grid) {
   long long points = 0;
   for (const GridActee& a : g.actees) points += static_cast<long long>(a.placements.size());
   points *= static_cast<long long>(g.thumbs.size() * g.grasps.size() * g.efforts.size());
+  if (grid.scale_efforts) points *= 2;  // the common axis first, to find where each actee turns
   if (points > kMaxPoints) {
     throw GridError("the grid has " + std::to_string(points) + " points, more than " + std::to_string(kMaxPoints) +
                      ": fewer --placements, --thumbs, --efforts or --grasps, or run it in --shard parts");
@@ -149,8 +154,12 @@ Explorer make_explorer(const ExploreFiles& files, const GridOptions& grid) {
   return e;
 }
 
+double applied_effort(const GridInfo& g, int grasp, double effort_n) {
+  return std::min(effort_n, g.grasp_limit[static_cast<size_t>(grasp)]);
+}
+
 PointResult run_point(const Explorer& e, const GridPoint& p) {
-  return run_point(e, p, e.grid.efforts[static_cast<size_t>(p.effort)]);
+  return run_point(e, p, e.grid.actees[static_cast<size_t>(p.actee)].efforts[static_cast<size_t>(p.effort)]);
 }
 
 PointResult run_point(const Explorer& e, const GridPoint& p, double effort_n) {
@@ -158,24 +167,20 @@ PointResult run_point(const Explorer& e, const GridPoint& p, double effort_n) {
   PointDrive drive;
   drive.thumb = e.grid.thumbs[static_cast<size_t>(p.thumb)];
   drive.grasp = e.grasp_types[static_cast<size_t>(p.grasp)];
-  drive.effort = effort_n;
+  drive.effort = applied_effort(e.grid, p.grasp, effort_n);
   const Script script = point_script(model, e.jaws[static_cast<size_t>(p.actee)][static_cast<size_t>(p.placement)], drive,
                                      e.timing);
   ScriptedAgent agent(script);
   PointResult r;
   r.first.assign(e.grid.functions.size(), -1.0);
-  PointObserver observer(&r);
+  // The push reaches the effort at the end of the squeeze (point_session.h).
+  PointObserver observer(&r, e.grid.strength, e.timing.close + e.timing.squeeze);
   Observer* observers[] = {&observer};
   run_session(model, *e.rules, agent, observers);
+  r.outcome = observer.watch().outcome();
+  r.applied_from = tidy(observer.watch().window_from());
+  if (r.broke_at >= 0) r.broke_at = tidy(r.broke_at);
   return r;
-}
-
-int outcome(const PointResult& r) {
-  int best = -1;
-  for (size_t f = 0; f < r.first.size(); ++f) {
-    if (r.first[f] >= 0 && (best < 0 || r.first[f] >= r.first[static_cast<size_t>(best)])) best = static_cast<int>(f);
-  }
-  return best;
 }
 
 }  // namespace afford

@@ -26,6 +26,9 @@ struct GridOptions {
   int thumbs = 3;      // over the emphasis region
   int efforts = 9;     // from 0 N up to max_effort (one: max_effort only)
   double max_effort = 0;  // N; 0: the hand's limit (the agent's max_force)
+  // Each actee's effort axis from 0 N to a little above its last turn
+  // (effort_axes.h) rather than to max_effort for all.
+  bool scale_efforts = true;
   std::vector<std::string> grasps;  // grasp types tried; empty: every type of the taxonomy
   double tolerance = 0.5;  // N, to which the thresholds are found
 };
@@ -54,6 +57,7 @@ struct GridActee {
   double limit = 0;     // N
   bool breaks = true;
   std::vector<double> placements;  // m, signed distances along the fixed arm
+  std::vector<double> efforts;     // N, its effort axis (GridInfo::efforts unless scaled to its turns)
   bool operator==(const GridActee&) const = default;
 };
 
@@ -64,9 +68,11 @@ struct GridInfo {
   std::vector<GridActee> actees;      // in the order given
   std::vector<double> thumbs;         // m
   std::vector<std::string> grasps;    // grasp type names; "-" for a model without a taxonomy
-  std::vector<double> grasp_limit;    // N, the hand's push limit in each grasp
-  std::vector<double> efforts;        // N
+  std::vector<double> grasp_limit;    // N, the hand's push limit in each grasp: efforts above are pushed at it
+  std::vector<double> efforts;        // N, the common effort axis, 0 to max_effort
+  bool efforts_scaled = false;        // each actee's axis fitted to its turns (GridActee::efforts)
   std::vector<std::string> functions; // the function models' names
+  std::vector<int> strength;          // per function, its rank in the models' `strength` (0 the weakest)
   double tolerance = 0.5;             // N
   bool operator==(const GridInfo&) const = default;
 };
@@ -75,7 +81,7 @@ struct Explorer {
   GridInfo grid;
   std::vector<int> grasp_types;  // per grasp: index into the taxonomy (-1: none)
   std::vector<std::vector<std::shared_ptr<const Model>>> models;  // [actee][placement]
-  std::vector<std::vector<JawsAtRest>> jaws;                      // [actee][placement]
+  std::vector<std::vector<ForcedLever>> jaws;                      // [actee][placement]
   std::shared_ptr<const RuleSet> rules;
   PointTiming timing;
 };
@@ -91,21 +97,27 @@ struct GridPoint {
 };
 
 struct PointResult {
-  std::vector<double> first;   // s, per function: when it was first inferred, -1 never
+  int outcome = -1;            // the strongest function reached while the effort was applied (outcome.h); -1 none
+  double applied_from = -1;    // s, when the effort was applied (or the actee broke before); -1 never
+  std::vector<double> first;   // s, per function: when it was first inferred, at any time; -1 never
   double peak_effort = 0;      // N, the largest push of the hand at the thumb
   double peak_actee_force = 0; // N, the largest force on the actee
   double broke_at = -1;        // s, when the actee broke; -1 never
 };
 
-// Runs one point through the engine. `effort` overrides the grid's effort
-// (the thresholds' bisection).
+// The effort the hand pushes with when asked for `effort_n` in grasp k: at
+// most the grasp's limit (a point above it is "beyond the grasp's cap").
+double applied_effort(const GridInfo& g, int grasp, double effort_n);
+
+// Runs one point through the engine. `effort` overrides the actee's effort
+// of the point (the thresholds' bisection); either is applied_effort()'s.
 PointResult run_point(const Explorer& e, const GridPoint& p);
 PointResult run_point(const Explorer& e, const GridPoint& p, double effort_n);
 
-// A point's outcome: the function it inferred last (the state the session
-// ended in: crash after pinch and hold), ties to the one later in the
-// function-model file; -1 when it inferred none. No function is named
-// here: the maps and thresholds follow whatever the function models say.
-int outcome(const PointResult& r);
+// A point's outcome (PointResult::outcome, outcome.h): the strongest
+// function, in the function models' own order, reached while the hand
+// applied the effort; -1 none. No function is named here: the maps and
+// thresholds follow whatever the function models say.
+inline int outcome(const PointResult& r) { return r.outcome; }
 
 }  // namespace afford

@@ -20,7 +20,9 @@ Json outcome_json(const GridInfo& g, int o) { return o < 0 ? Json(nullptr) : Jso
 Json point_json(const GridInfo& g, const PointResult& p) {
   Json first = Json::object();
   for (size_t f = 0; f < g.functions.size(); ++f) first[g.functions[f]] = p.first[f] >= 0 ? Json(p.first[f]) : Json(nullptr);
-  return {{"first_s", first}, {"peak_effort_N", p.peak_effort}, {"peak_actee_force_N", p.peak_actee_force},
+  return {{"outcome", outcome_json(g, p.outcome)},
+          {"applied_s", p.applied_from >= 0 ? Json(p.applied_from) : Json(nullptr)},
+          {"first_s", first}, {"peak_effort_N", p.peak_effort}, {"peak_actee_force_N", p.peak_actee_force},
           {"broke_s", p.broke_at >= 0 ? Json(p.broke_at) : Json(nullptr)}};
 }
 
@@ -79,8 +81,16 @@ struct Reader {
     }
     bad(std::string("'") + key + "' is not a function of the grid or null");
   }
+  // A time or null (-1).
+  double time(const Json& j, const char* key) const {
+    const Json& v = at(j, key);
+    if (!v.is_null() && !v.is_number()) bad(std::string("'") + key + "' is neither a number nor null");
+    return v.is_null() ? -1.0 : v.get<double>();
+  }
   PointResult point(const GridInfo& g, const Json& j) const {
     PointResult p;
+    p.outcome = outcome(g, j, "outcome");
+    p.applied_from = time(j, "applied_s");
     const Json& first = at(j, "first_s");
     for (const std::string& f : g.functions) {
       const Json& t = at(first, f.c_str());
@@ -89,9 +99,7 @@ struct Reader {
     }
     p.peak_effort = number(j, "peak_effort_N");
     p.peak_actee_force = number(j, "peak_actee_force_N");
-    const Json& broke = at(j, "broke_s");
-    if (!broke.is_null() && !broke.is_number()) bad("'broke_s' is neither a number nor null");
-    p.broke_at = broke.is_null() ? -1.0 : broke.get<double>();
+    p.broke_at = time(j, "broke_s");
     return p;
   }
 };
@@ -102,7 +110,7 @@ std::string explore_json(const GridInfo& g, const ExploreResult& r) {
   Json actees = Json::array();
   for (const GridActee& a : g.actees) {
     actees.push_back({{"name", a.name}, {"file", a.file}, {"fits", a.fits}, {"why", a.why}, {"limit_N", a.limit},
-                      {"breaks", a.breaks}, {"placements_m", a.placements}});
+                      {"breaks", a.breaks}, {"placements_m", a.placements}, {"efforts_N", a.efforts}});
   }
   Json grasps = Json::array();
   for (size_t k = 0; k < g.grasps.size(); ++k) grasps.push_back({{"name", g.grasps[k]}, {"limit_N", g.grasp_limit[k]}});
@@ -121,8 +129,15 @@ std::string explore_json(const GridInfo& g, const ExploreResult& r) {
                       {"lever_effort_at_limit_N", s.lever_effort_at_limit}, {"points", points},
                       {"thresholds", thresholds}});
   }
-  Json j = {{"object", g.object}, {"functions", g.functions}, {"tolerance_N", g.tolerance},
-            {"thumbs_m", g.thumbs}, {"efforts_N", g.efforts}, {"grasps", grasps}, {"actees", actees}};
+  Json strength = Json::array();  // weakest first
+  for (size_t rank = 0; rank < g.strength.size(); ++rank) {
+    for (size_t f = 0; f < g.strength.size(); ++f) {
+      if (g.strength[f] == static_cast<int>(rank)) strength.push_back(g.functions[f]);
+    }
+  }
+  Json j = {{"object", g.object}, {"functions", g.functions}, {"strength", strength}, {"tolerance_N", g.tolerance},
+            {"thumbs_m", g.thumbs}, {"efforts_N", g.efforts}, {"efforts_scaled", g.efforts_scaled},
+            {"grasps", grasps}, {"actees", actees}};
   if (!r.shard.whole()) j["shard"] = {{"part", r.shard.part}, {"count", r.shard.count}};
   j["series"] = series;
   return j.dump(1) + "\n";
@@ -156,9 +171,24 @@ void parse_explore_json(const std::string& text, const std::string& path, GridIn
     if (!f.is_string()) in.bad("a function name is not a string");
     g->functions.push_back(f.get<std::string>());
   }
+  // Every function once, weakest first; a file without it (written before
+  // there was one) ranks them in their order, as the function models do.
+  g->strength.assign(g->functions.size(), -1);
+  const Json strength = j.is_object() && j.contains("strength") ? in.array(j, "strength") : Json(g->functions);
+  for (size_t rank = 0; rank < strength.size(); ++rank) {
+    const auto it = strength[rank].is_string()
+                        ? std::find(g->functions.begin(), g->functions.end(), strength[rank].get<std::string>())
+                        : g->functions.end();
+    if (it == g->functions.end() || g->strength[static_cast<size_t>(it - g->functions.begin())] >= 0) {
+      in.bad("'strength' is not every function once");
+    }
+    g->strength[static_cast<size_t>(it - g->functions.begin())] = static_cast<int>(rank);
+  }
+  if (strength.size() != g->functions.size()) in.bad("'strength' is not every function once");
   g->tolerance = in.number(j, "tolerance_N");
   g->thumbs = in.numbers(j, "thumbs_m");
   g->efforts = in.numbers(j, "efforts_N");
+  g->efforts_scaled = j.contains("efforts_scaled") && in.flag(j, "efforts_scaled");
   for (const Json& k : in.array(j, "grasps")) {
     g->grasps.push_back(in.text(k, "name"));
     g->grasp_limit.push_back(in.number(k, "limit_N"));
@@ -174,7 +204,11 @@ void parse_explore_json(const std::string& text, const std::string& path, GridIn
     actee.limit = in.number(a, "limit_N");
     actee.breaks = in.flag(a, "breaks");
     actee.placements = in.numbers(a, "placements_m");
-    if (actee.fits == actee.placements.empty()) in.bad("an actee that fits without placements, or one that does not with some");
+    actee.efforts = a.is_object() && a.contains("efforts_N") ? in.numbers(a, "efforts_N") : std::vector<double>{};
+    if (!a.contains("efforts_N") && actee.fits) actee.efforts = g->efforts;  // one axis for all, as before
+    if (actee.fits == actee.placements.empty() || actee.fits == actee.efforts.empty()) {
+      in.bad("an actee that fits without placements or efforts, or one that does not with some");
+    }
     g->actees.push_back(std::move(actee));
   }
   if (j.contains("shard")) {
@@ -191,7 +225,9 @@ void parse_explore_json(const std::string& text, const std::string& path, GridIn
     out.mechanical_advantage = in.number(s, "mechanical_advantage");
     out.lever_effort_at_limit = in.number(s, "lever_effort_at_limit_N");
     for (const Json& p : in.array(s, "points")) out.points.push_back(in.point(*g, p));
-    if (out.points.size() != g->efforts.size()) in.bad("a series without one point per effort");
+    if (out.points.size() != g->actees[static_cast<size_t>(out.key.actee)].efforts.size()) {
+      in.bad("a series without one point per effort of its actee");
+    }
     for (const Json& t : in.array(s, "thresholds")) {
       Threshold th;
       th.from = in.outcome(*g, t, "from");

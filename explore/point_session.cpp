@@ -4,8 +4,7 @@
 #include <cmath>
 
 #include "errors.h"
-#include "forced_lever.h"
-#include "state.h"
+#include "squeeze.h"
 
 namespace afford {
 namespace {
@@ -16,12 +15,6 @@ namespace {
 constexpr double kWristBehind = 0.07;  // m
 constexpr double kWristAbove = 0.09;   // m
 
-// The forced balance is stepped with this step until the angle changes by
-// less than kSettled: the implicit step damps any inertia, so it comes to
-// rest in a few steps.
-constexpr double kSettleStep = 0.01;  // s
-constexpr double kSettled = 1e-12;    // rad
-constexpr int kMaxSettleSteps = 10000;
 
 KeyframeSpec grip_keyframe(double t, double thumb, double squeeze) {
   KeyframeSpec k;
@@ -35,44 +28,24 @@ KeyframeSpec grip_keyframe(double t, double thumb, double squeeze) {
 
 }  // namespace
 
-JawsAtRest jaws_at_rest(const Model& m) {
-  const auto state = make_state(m);
-  JawsAtRest jaws;
-  jaws.lever.actee = m.has_actee && state->between_jaws;
-  jaws.lever.load_distance = std::abs(state->load_distance);
-  jaws.lever.contact_angle = state->contact_angle;
-  jaws.lever.thickness = state->actee_thickness;
-  jaws.lever.object_rotation = m.object_start.linear();
-  jaws.contact_angle = state->contact_angle;
-  return jaws;
-}
-
-double squeeze_for_effort(const Model& m, const JawsAtRest& jaws, double thumb_m, double effort_n) {
-  ForcedLever lever = jaws.lever;
-  lever.effort_distance = std::abs(thumb_m);
-  double theta = m.theta_rest, omega = 0;
-  for (int i = 0; i < kMaxSettleSteps; ++i) {
-    const ForcedStep step = step_forced_lever(m, lever, theta, omega, effort_n, kSettleStep);
-    const bool settled = std::abs(step.theta - theta) < kSettled;
-    theta = step.theta;
-    omega = step.omega;
-    if (settled) break;
-  }
-  return std::max(0.0, std::abs(thumb_m) * (m.theta_rest - theta) + effort_n / m.force_gain);
-}
-
-Script point_script(const Model& m, const JawsAtRest& jaws, const PointDrive& drive, const PointTiming& timing) {
+Script point_script(const Model& m, const ForcedLever& jaws, const PointDrive& drive, const PointTiming& timing) {
   if (!m.has_agent) throw LogicError("point_script() needs a model with its agent");
   const double r = drive.thumb;
-  double face_y = 0, mid_z = 0;
+  double face_y = 0, mid_z = 0, index_y = 0, index_z = 0;
   arm_outer_face(m, Arm::moving, r, &face_y, &mid_z);
+  arm_outer_face(m, Arm::fixed, r, &index_y, &index_z);
+  // The wrist midway across between the thumb (on the moving arm at rest,
+  // turned about the hinge's z) and the index, so that a wide-open tool
+  // keeps both within the fingers' reach (engine/reach.h).
+  const double c = std::cos(m.theta_rest), s = std::sin(m.theta_rest);
+  const double across = 0.5 * (r * s + face_y * c + index_y);  // m, tool frame y
   const double behind = r >= 0 ? -kWristBehind : kWristBehind;
-  const Eigen::Vector3d wrist = m.object_start * Eigen::Vector3d(r + behind, 0, mid_z + kWristAbove);
+  const Eigen::Vector3d wrist = m.object_start * Eigen::Vector3d(r + behind, across, mid_z + kWristAbove);
   const Eigen::Matrix3d palm_down = m.object_start.linear();
 
   // Where the jaws touch the actee, as a thumb advance; all of the effort's
   // squeeze when there is nothing between them.
-  const double touch = jaws.lever.actee ? std::max(0.0, std::abs(r) * (m.theta_rest - jaws.contact_angle)) : 0.0;
+  const double touch = jaws.actee ? std::max(0.0, std::abs(r) * (m.theta_rest - jaws.contact_angle)) : 0.0;
   const double push = squeeze_for_effort(m, jaws, r, drive.effort);
 
   ScriptSpec spec;

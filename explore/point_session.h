@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "forced_lever.h"
+#include "squeeze.h"
 #include "model.h"
 #include "script.h"
 
@@ -35,26 +35,13 @@ struct PointDrive {
   double effort = 0;  // N, the push at the thumb the squeeze aims at
 };
 
-// The lever of a model at rest with its actee (or none) between the jaws:
-// where they touch it, as the forced balance needs it. Found once per model
-// (an FCL bisection), shared by every point on it.
-struct JawsAtRest {
-  ForcedLever lever;         // effort_distance is set per point
-  double contact_angle = 0;  // rad, where the jaws touch the actee (lever.actee)
-};
-JawsAtRest jaws_at_rest(const Model& m);
-
-// The thumb's advance past the rest angle (m) at which the hand, an
-// impedance of stiffness force_gain behind the arm, pushes with `effort`
-// newtons at `thumb` once the lever has come to rest against the spring and
-// the actee (the model's own forced balance, friction included, the actee
-// intact). Beyond the hand's limit the push stays at the limit.
-double squeeze_for_effort(const Model& m, const JawsAtRest& jaws, double thumb_m, double effort_n);
-
+// The lever at rest with the actee (engine/squeeze.h's lever_at_start),
+// found once per model (an FCL bisection) and shared by every point on it;
+// the squeeze for a point's effort is squeeze.h's squeeze_for_effort.
 // The script of one grid point, compiled against the model (which must
 // have its agent): the hand above the tool in the tool's frame, palm toward
 // -z of the tool, the thumb on the moving arm and the index on the fixed
 // arm at drive.thumb. Throws DataError when the grip does not fit the tool.
-Script point_script(const Model& m, const JawsAtRest& jaws, const PointDrive& drive, const PointTiming& timing = {});
+Script point_script(const Model& m, const ForcedLever& jaws, const PointDrive& drive, const PointTiming& timing = {});
 
 }  // namespace afford

@@ -14,7 +14,8 @@
 namespace afford {
 namespace {
 
-// The shortest text that reads back as the same double.
+// The shortest text that reads back as the same double (the grid's values
+// and times are tidy, grid_axis.h: 0.04125, not 0.041249999999999995).
 std::string exact(double v) {
   char buf[32];
   const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
@@ -70,6 +71,27 @@ void summarise_actee(const GridInfo& g, const ExploreResult& r, int actee, std::
                                                            q(a.placements.back(), dim::length);
   *out += a.name + " (limit " + q(a.limit, dim::force) + (a.breaks ? ", breaks" : ", gives way") + "): tried " + span +
           " along the jaws\n";
+  const std::vector<double>& efforts = a.efforts;
+  *out += "  efforts " + q(efforts.front(), dim::force) + " to " + q(efforts.back(), dim::force);
+  if (g.efforts_scaled && efforts != g.efforts) {
+    *out += ", scaled to where it turns (on the common axis, up to " + q(g.efforts.back(), dim::force) +
+            ", no turn lies above it)";
+  } else if (g.efforts_scaled) {
+    *out += ": no turn to scale to";
+  }
+  *out += "\n";
+  for (size_t k = 0; k < g.grasps.size(); ++k) {
+    if (g.grasp_limit[k] < efforts.back()) {
+      *out += "  " + g.grasps[k] + " pushes at most " + q(g.grasp_limit[k], dim::force) +
+              ": efforts above it are pushed at it (beyond the grasp's cap)\n";
+    }
+  }
+  for (const std::vector<int>& group : alike_grasps(g, r, actee)) {
+    if (group.size() < 2) continue;
+    std::string names;
+    for (int k : group) names += (names.empty() ? "" : ", ") + g.grasps[static_cast<size_t>(k)];
+    *out += "  alike everywhere (one row of the map): " + names + "\n";
+  }
   // Index 0 stands for no function, then each function in file order.
   std::vector<Seen> seen(g.functions.size() + 1);
   for (Seen& s : seen) s.by_grasp.assign(g.grasps.size(), false);
@@ -81,7 +103,7 @@ void summarise_actee(const GridInfo& g, const ExploreResult& r, int actee, std::
     // Past its grasp's limit the hand pushes with the limit: that is the effort.
     const double limit = g.grasp_limit[static_cast<size_t>(s.key.grasp)];
     for (size_t i = 0; i < s.points.size(); ++i) {
-      seen[static_cast<size_t>(outcome(s.points[i]) + 1)].add(std::min(g.efforts[i], limit), s);
+      seen[static_cast<size_t>(outcome(s.points[i]) + 1)].add(std::min(a.efforts[i], limit), s);
       for (size_t f = 0; f < g.functions.size(); ++f) inferred[f] = inferred[f] || s.points[i].first[f] >= 0;
     }
     for (const Threshold& t : s.thresholds) {
@@ -96,7 +118,7 @@ void summarise_actee(const GridInfo& g, const ExploreResult& r, int actee, std::
             " (mechanical advantage " + format_quantity(explained->mechanical_advantage, dim::none) +
             ", the spring included)\n";
   }
-  for (int o = -1; o < static_cast<int>(g.functions.size()); ++o) {
+  for (int o : outcomes_by_strength(g)) {
     const Seen& s = seen[static_cast<size_t>(o + 1)];
     if (!s.any) continue;
     *out += "  ends in " + outcome_name(g, o) + ": from " + q(s.low, dim::force) + " (" + where(g, s.lowest->key) +
@@ -151,12 +173,22 @@ std::string turn_span_text(const GridInfo& g, const TurnSpan& t) {
   return text;
 }
 
+std::vector<int> outcomes_by_strength(const GridInfo& g) {
+  std::vector<int> order = {-1};
+  for (size_t rank = 0; rank < g.strength.size(); ++rank) {
+    for (size_t f = 0; f < g.strength.size(); ++f) {
+      if (g.strength[f] == static_cast<int>(rank)) order.push_back(static_cast<int>(f));
+    }
+  }
+  return order;
+}
+
 std::string outcome_name(const GridInfo& g, int outcome) {
   return outcome < 0 ? std::string("none") : g.functions[static_cast<size_t>(outcome)];
 }
 
 std::string points_csv(const GridInfo& g, const ExploreResult& r) {
-  std::string csv = "actee,placement_m,thumb_m,grasp,effort_N,outcome";
+  std::string csv = "actee,placement_m,thumb_m,grasp,effort_N,applied_effort_N,outcome,applied_s";
   for (const std::string& f : g.functions) csv += "," + f + "_s";
   csv += ",peak_effort_N,peak_actee_force_N,broke_s\n";
   for (const SeriesResult& s : r.series) {
@@ -166,7 +198,10 @@ std::string points_csv(const GridInfo& g, const ExploreResult& r) {
                             g.grasps[static_cast<size_t>(s.key.grasp)];
     for (size_t i = 0; i < s.points.size(); ++i) {
       const PointResult& p = s.points[i];
-      csv += key + "," + exact(g.efforts[i]) + "," + outcome_name(g, outcome(p)) + first_times(p) + "," +
+      const double effort = a.efforts[i];
+      csv += key + "," + exact(effort) + "," + exact(applied_effort(g, s.key.grasp, effort)) + "," +
+             outcome_name(g, outcome(p)) + "," + (p.applied_from >= 0 ? exact(p.applied_from) : std::string()) +
+             first_times(p) + "," +
              exact(p.peak_effort) + "," + exact(p.peak_actee_force) + "," +
              (p.broke_at >= 0 ? exact(p.broke_at) : std::string()) + "\n";
     }
@@ -194,8 +229,10 @@ std::string thresholds_csv(const GridInfo& g, const ExploreResult& r) {
 std::string summary_text(const GridInfo& g, const ExploreResult& r) {
   std::string out = "explored the " + g.object + ": " + count(g.actees.size(), "actee") + ", " +
                     count(g.thumbs.size(), "thumb position") + ", " + count(g.grasps.size(), "grasp") + ", " +
-                    count(g.efforts.size(), "effort") + " up to " +
-                    q(g.efforts.back(), dim::force) + "; thresholds to " + q(g.tolerance, dim::force) + "\n";
+                    count(g.efforts.size(), "effort") + " up to " + q(g.efforts.back(), dim::force) +
+                    (g.efforts_scaled ? " (each actee's scaled to where it turns)" : "") + "; thresholds to " +
+                    q(g.tolerance, dim::force) + "\n" +
+                    "  a point ends in the strongest function it reached while the hand applied the effort\n";
   for (size_t a = 0; a < g.actees.size(); ++a) summarise_actee(g, r, static_cast<int>(a), &out);
   return out;
 }

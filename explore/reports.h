@@ -3,8 +3,10 @@
 // whole grid run at once):
 //
 //   points.csv      one row per point: actee, placement, thumb, grasp,
-//                   effort, outcome, when each function was first inferred,
-//                   the peaks, when the actee broke
+//                   effort, the effort applied (at most the grasp's cap),
+//                   outcome (outcome.h), when the effort was applied, when
+//                   each function was first inferred, the peaks, when the
+//                   actee broke
 //   thresholds.csv  one row per turn of the outcome along the effort
 //   summary.txt     per actee in words
 //   explore.json    all of it (and what `afford explore --merge` reads)
@@ -20,6 +22,8 @@ namespace afford {
 
 // "none" for -1, else the function's name.
 std::string outcome_name(const GridInfo& g, int outcome);
+// -1 (none), then every function from the weakest to the strongest.
+std::vector<int> outcomes_by_strength(const GridInfo& g);
 
 std::string points_csv(const GridInfo& g, const ExploreResult& r);
 std::string thresholds_csv(const GridInfo& g, const ExploreResult& r);

@@ -1,5 +1,6 @@
 #include "results.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -65,12 +66,40 @@ std::vector<GridPoint> grid_series(const GridInfo& g) {
 std::vector<GridPoint> grid_points(const GridInfo& g) {
   std::vector<GridPoint> points;
   for (const GridPoint& s : grid_series(g)) {
-    for (size_t k = 0; k < g.efforts.size(); ++k) {
+    for (size_t k = 0; k < g.actees[static_cast<size_t>(s.actee)].efforts.size(); ++k) {
       points.push_back(s);
       points.back().effort = static_cast<int>(k);
     }
   }
   return points;
+}
+
+bool repeats_previous(const GridInfo& g, const GridPoint& series, size_t i) {
+  const std::vector<double>& efforts = g.actees[static_cast<size_t>(series.actee)].efforts;
+  return i > 0 && applied_effort(g, series.grasp, efforts[i]) == applied_effort(g, series.grasp, efforts[i - 1]);
+}
+
+std::vector<std::vector<PointResult>> run_series(const Explorer& e, const std::vector<GridPoint>& series, int threads,
+                                                 const std::function<void(std::size_t, std::size_t)>& progress) {
+  std::vector<std::vector<PointResult>> out(series.size());
+  std::vector<std::pair<size_t, size_t>> runs;  // (series, effort)
+  for (size_t s = 0; s < series.size(); ++s) {
+    out[s].resize(e.grid.actees[static_cast<size_t>(series[s].actee)].efforts.size());
+    for (size_t k = 0; k < out[s].size(); ++k) {
+      if (!repeats_previous(e.grid, series[s], k)) runs.emplace_back(s, k);
+    }
+  }
+  parallel_for(runs.size(), threads, [&](size_t i) {
+    GridPoint p = series[runs[i].first];
+    p.effort = static_cast<int>(runs[i].second);
+    out[runs[i].first][runs[i].second] = run_point(e, p);
+  }, progress);
+  for (size_t s = 0; s < series.size(); ++s) {
+    for (size_t k = 1; k < out[s].size(); ++k) {
+      if (repeats_previous(e.grid, series[s], k)) out[s][k] = out[s][k - 1];
+    }
+  }
+  return out;
 }
 
 ExploreResult explore(const Explorer& e, Shard shard, int threads,
@@ -84,29 +113,25 @@ ExploreResult explore(const Explorer& e, Shard shard, int threads,
     SeriesResult s;
     s.index = static_cast<int>(i);
     s.key = all[i];
-    s.points.resize(g.efforts.size());
     const Model& m = *e.models[static_cast<size_t>(s.key.actee)][static_cast<size_t>(s.key.placement)];
     const double thumb = g.thumbs[static_cast<size_t>(s.key.thumb)];
     // The load acts where the moving jaw touches the actee (jaw_contact.cpp).
-    const JawsAtRest& jaws = e.jaws[static_cast<size_t>(s.key.actee)][static_cast<size_t>(s.key.placement)];
-    s.mechanical_advantage = mechanical_advantage(thumb, jaws.lever.load_distance);
-    s.lever_effort_at_limit = effort_for_load(m, jaws.contact_angle, thumb, jaws.lever.load_distance, m.actee_limit);
+    const ForcedLever& jaws = e.jaws[static_cast<size_t>(s.key.actee)][static_cast<size_t>(s.key.placement)];
+    s.mechanical_advantage = mechanical_advantage(thumb, jaws.load_distance);
+    s.lever_effort_at_limit = effort_for_load(m, jaws.contact_angle, thumb, jaws.load_distance, m.actee_limit);
     result.series.push_back(std::move(s));
   }
 
   // Every effort of every series, then every turn between two of them.
-  const size_t efforts = g.efforts.size();
-  const size_t points = result.series.size() * efforts;
+  std::vector<GridPoint> keys;
+  for (const SeriesResult& s : result.series) keys.push_back(s.key);
+  size_t points = 0;
   std::vector<Turn> turns;
-  auto report = [&](size_t done, size_t) {
-    if (progress) progress(done, points + turns.size());
-  };
-  parallel_for(points, threads, [&](size_t i) {
-    SeriesResult& s = result.series[i / efforts];
-    GridPoint p = s.key;
-    p.effort = static_cast<int>(i % efforts);
-    s.points[i % efforts] = run_point(e, p);
-  }, report);
+  std::vector<std::vector<PointResult>> runs = run_series(e, keys, threads, [&](size_t done, size_t total) {
+    points = total;
+    if (progress) progress(done, total);
+  });
+  for (size_t s = 0; s < result.series.size(); ++s) result.series[s].points = std::move(runs[s]);
 
   for (size_t s = 0; s < result.series.size(); ++s) {
     const std::vector<PointResult>& pts = result.series[s].points;
@@ -118,7 +143,10 @@ ExploreResult explore(const Explorer& e, Shard shard, int threads,
   parallel_for(turns.size(), threads, [&](size_t i) {
     const SeriesResult& s = result.series[turns[i].series];
     const size_t k = turns[i].effort;
-    bisect(e, s.key, g.efforts[k], s.points[k], g.efforts[k + 1], s.points[k + 1], &found[i]);
+    // Beyond the grasp's cap the hand pushes with the cap: the turn is below it.
+    const std::vector<double>& efforts = g.actees[static_cast<size_t>(s.key.actee)].efforts;
+    bisect(e, s.key, efforts[k], s.points[k], applied_effort(g, s.key.grasp, efforts[k + 1]), s.points[k + 1],
+           &found[i]);
   }, [&](size_t done, size_t) {
     if (progress) progress(points + done, points + turns.size());
   });
@@ -127,6 +155,52 @@ ExploreResult explore(const Explorer& e, Shard shard, int threads,
     to.insert(to.end(), found[i].begin(), found[i].end());
   }
   return result;
+}
+
+namespace {
+
+bool same_map(const SeriesResult& a, const SeriesResult& b, double tolerance) {
+  if (a.points.size() != b.points.size() || a.thresholds.size() != b.thresholds.size()) return false;
+  for (size_t i = 0; i < a.points.size(); ++i) {
+    if (outcome(a.points[i]) != outcome(b.points[i])) return false;
+  }
+  for (size_t i = 0; i < a.thresholds.size(); ++i) {
+    const Threshold &x = a.thresholds[i], &y = b.thresholds[i];
+    if (x.from != y.from || x.to != y.to || std::abs(x.effort - y.effort) > tolerance) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> alike_grasps(const GridInfo& g, const ExploreResult& r, int actee) {
+  // series[grasp]: the actee's series of that grasp, in grid order (placement, thumb).
+  std::vector<std::vector<const SeriesResult*>> series(g.grasps.size());
+  for (const SeriesResult& s : r.series) {
+    if (s.key.actee == actee) series[static_cast<size_t>(s.key.grasp)].push_back(&s);
+  }
+  std::vector<std::vector<int>> groups;
+  for (size_t k = 0; k < g.grasps.size(); ++k) {
+    auto alike = [&](const std::vector<int>& group) {
+      const auto& first = series[static_cast<size_t>(group.front())];
+      if (first.size() != series[k].size()) return false;
+      // Alike up to where either grasp's cap cuts the axis.
+      for (double effort : g.actees[static_cast<size_t>(actee)].efforts) {
+        if (applied_effort(g, group.front(), effort) != applied_effort(g, static_cast<int>(k), effort)) return false;
+      }
+      for (size_t i = 0; i < first.size(); ++i) {
+        if (!same_map(*first[i], *series[k][i], g.tolerance)) return false;
+      }
+      return true;
+    };
+    auto it = std::find_if(groups.begin(), groups.end(), alike);
+    if (it == groups.end()) {
+      groups.push_back({static_cast<int>(k)});
+    } else {
+      it->push_back(static_cast<int>(k));
+    }
+  }
+  return groups;
 }
 
 ExploreResult merge(const GridInfo& g, std::vector<ExploreResult> parts) {

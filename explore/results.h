@@ -46,14 +46,30 @@ struct ExploreResult {
 
 // The series of a grid, in order (actee, placement, thumb, grasp).
 std::vector<GridPoint> grid_series(const GridInfo& g);
-// Every point of a grid: each series at each effort, in that order.
+// Every point of a grid: each series at each of its actee's efforts, in that order.
 std::vector<GridPoint> grid_points(const GridInfo& g);
+
+// Whether effort i of a series is pushed as effort i - 1 is (both beyond
+// its grasp's cap), so that one run serves both.
+bool repeats_previous(const GridInfo& g, const GridPoint& series, size_t i);
+
+// Every effort of each series on its actee's axis, on `threads` threads;
+// an effort that repeats_previous() is run once. Same bits whatever the
+// number of threads.
+std::vector<std::vector<PointResult>> run_series(const Explorer& e, const std::vector<GridPoint>& series, int threads,
+                                                 const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 // Runs the grid's series of `shard` on `threads` threads: every effort of
 // each series, then the thresholds between them. `progress(done, total)`
 // counts simulated sessions. Same bits whatever the number of threads.
 ExploreResult explore(const Explorer& e, Shard shard, int threads,
                       const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+// The grasp types that an actee's map shows alike: groups (each in grid
+// order, the groups by their first) of grasps whose series, at every
+// placement and thumb, end the same at every effort and turn between the
+// same outcomes at efforts within the tolerance of each other.
+std::vector<std::vector<int>> alike_grasps(const GridInfo& g, const ExploreResult& r, int actee);
 
 // Joins shards of one grid into the whole; throws std::runtime_error when a
 // series is missing or given twice.

@@ -43,7 +43,7 @@ void write_recordings(const fs::path& source, const fs::path& out) {
     afford::ScriptedAgent agent(session.script);
     FirstFrames first(agent);
     afford::Observer* const observers[] = {&recorder};
-    afford::run_session(session.model, *session.rules, first, observers);
+    afford::run_session(session, *session.rules, first, observers);
   }
   const std::string bytes = afford::read_regular_file(rec_file, size_t{1} << 20);
   fs::remove(rec_file);

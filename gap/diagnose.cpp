@@ -19,6 +19,8 @@ constexpr double kStructured = 2;       // a residual's whiteness statistic over
 constexpr size_t kFolds = 5;            // cross-validation folds, at most
 
 constexpr size_t kBlocks = 4;           // blocks cut from a measurement's traces, about (at least one a trace)
+constexpr int kLateRounds = 5;           // fits of a delay on the readings the one before leaves
+constexpr double kLateSettled = 5e-4;    // s: a delay that moves less than this holds
 constexpr size_t kMinBlock = 200;       // fitted samples: a block with fewer joins its neighbour
 
 // Samples from..to of a replay: a block of its trace, judged on its own.
@@ -233,6 +235,27 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // blocks are judged by a fit on the others; the parameters reported come
   // from a fit on every trace.
   std::vector<Replay> whole = m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m);
+  // Where a sensor may read late, its readings after a stretch the model
+  // cannot predict are left out for every set alike: the delay from a fit
+  // of the latency alone on the whole traces decides how long after.
+  const bool latency_asked = m.rig == Rig::lever &&
+                             (options.library.empty() || std::find(options.library.begin(), options.library.end(),
+                                                                   EffectKind::sensor_latency) != options.library.end());
+  // The readings left in bias that fit toward no delay, so it is fitted
+  // again on what the delay found leaves, until the delay holds.
+  if (latency_asked) {
+    std::vector<size_t> every(whole.size());
+    for (size_t i = 0; i < every.size(); ++i) every[i] = i;
+    const std::vector<Replay> as_replayed = whole;
+    double delay = 0;
+    for (int round = 0; round < kLateRounds; ++round) {
+      const double found = Fitter(model, whole, every, {}).fit({EffectKind::sensor_latency}).delay;
+      if (round > 0 && std::abs(found - delay) < kLateSettled) break;
+      delay = found;
+      whole = as_replayed;
+      leave_out_late_readings(whole, delay);
+    }
+  }
   std::vector<double> x_noise;  // each trace's motion sensor's
   for (const Replay& r : whole) x_noise.push_back(r.x_noise);
   const std::vector<Block> blocks = blocks_of(whole);

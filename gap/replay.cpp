@@ -192,6 +192,24 @@ std::vector<double> delayed(const std::vector<double>& t, const std::vector<doub
   return out;
 }
 
+void leave_out_late_readings(std::vector<Replay>& replays, double delay) {
+  if (delay <= 0) return;
+  for (Replay& r : replays) {
+    const size_t n = r.t.size();
+    const double gap = kGapSteps * (r.t.back() - r.t.front()) / static_cast<double>(std::max<size_t>(1, n - 1));
+    const std::vector<bool> source = r.fitted;  // where the model predicts the effort
+    size_t start = 0;                             // the first sample of the stretch sample i is in
+    for (size_t i = 0; i < n; ++i) {
+      if (i > 0 && r.t[i] - r.t[i - 1] > gap) start = i;
+      if (!r.fitted[i]) continue;
+      const double at = r.t[i] - delay;
+      // The samples either side of the earlier time must both be predicted.
+      const size_t later = static_cast<size_t>(std::upper_bound(r.t.begin(), r.t.end(), at) - r.t.begin());
+      if (at <= r.t[start] || later == 0 || later >= n || !source[later] || !source[later - 1]) r.fitted[i] = false;
+    }
+  }
+}
+
 void weigh(std::vector<Replay>& replays, double noise) {
   // Only the weights' ratios matter to fits and weighted RMSEs; a
   // noise-free effort (traces written by formulas) still ranks them.

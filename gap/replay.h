@@ -74,6 +74,13 @@ std::vector<Replay> replay_plates(const Model& actee_model, const Measurement& m
 // motion adds nothing.
 void weigh(std::vector<Replay>& replays, double noise);
 
+// A sensor `delay` s late reads at each sample the effort of an earlier
+// one. Where that earlier time lies where the model predicts nothing (at
+// rest, in a reversal, at a limit, in the snap, before the trace or a time
+// gap), the sample is left out of fits and scores too: a late sensor's
+// reading there is as indeterminate as friction at rest.
+void leave_out_late_readings(std::vector<Replay>& replays, double delay);
+
 // y (sampled at the increasing times t) at time `at`: linear between
 // samples, held before the first and after the last.
 double value_at(const std::vector<double>& t, const std::vector<double>& y, double at);

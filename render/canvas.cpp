@@ -116,6 +116,15 @@ void RasterCanvas::text(double x, double y, const std::string& s, Rgb c, Anchor 
 
 double RasterCanvas::text_width(const std::string& s) const { return static_cast<double>(render::text_width(s, 2)); }
 
+std::string fit_to(const Canvas& c, const std::string& s, double width) {
+  if (c.text_width(s) <= width) return s;
+  for (size_t n = s.size(); n-- > 0;) {
+    const std::string t = s.substr(0, n) + "..";
+    if (c.text_width(t) <= width) return t;
+  }
+  return "";
+}
+
 double tick_step(double span, int n) {
   if (span <= 0) return 1;
   const double raw = span / n;

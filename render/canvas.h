@@ -57,6 +57,10 @@ class RasterCanvas : public Canvas {
   Image* img_;
 };
 
+// The text if it is at most `width` wide on the canvas, else its longest
+// start that is, with ".." after it.
+std::string fit_to(const Canvas& c, const std::string& s, double width);
+
 // "Nice" tick step: 1, 2 or 5 times a power of ten, about n ticks over span.
 double tick_step(double span, int n);
 // A tick's label with as many decimals as the step needs.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "axis_range.h"
 #include "canvas.h"
 
 namespace afford::render {
@@ -11,7 +12,8 @@ namespace {
 
 constexpr Rgb kInk{40, 44, 52}, kGrid{225, 228, 234}, kAxisInk{120, 126, 138}, kPanel{252, 252, 253};
 constexpr Rgb kMarker{150, 150, 160};
-constexpr double kLeft = 86, kRight = 250, kTop = 70, kBottom = 64;
+constexpr double kLeft = 86, kTop = 70, kBottom = 64;
+constexpr double kKey = 34, kGap = 16;  // px: a legend entry's line or swatch with its space; panel to legend
 
 struct Range {
   double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
@@ -20,43 +22,52 @@ struct Range {
     lo = std::min(lo, v);
     hi = std::max(hi, v);
   }
-  // A range with room to draw: never empty, never a single value.
-  void settle() {
-    if (!(lo <= hi)) lo = 0, hi = 1;
-    if (hi - lo < 1e-12 * std::max(1.0, std::abs(hi))) lo -= 0.5, hi += 0.5;
-  }
 };
 
+// The labels of the legend, in order, each once.
+std::vector<std::string> legend_labels(const Chart& ch) {
+  std::vector<std::string> shown;
+  for (const ChartCurve& cv : ch.curves) {
+    if (!cv.label.empty() && std::find(shown.begin(), shown.end(), cv.label) == shown.end()) shown.push_back(cv.label);
+  }
+  for (const ChartLegendBand& b : ch.band_legend) shown.push_back(b.label);
+  return shown;
+}
+
 void draw(Canvas& c, const Chart& ch, int width, int height) {
-  const double x0 = kLeft, x1 = width - kRight, top = kTop, bottom = height - kBottom;
+  // The legend's column is as wide as its longest label (measured in the
+  // canvas's font), up to 40 % of the picture; longer labels are shortened.
+  const std::vector<std::string> labels = legend_labels(ch);
+  double label_w = 0;
+  for (const std::string& l : labels) label_w = std::max(label_w, c.text_width(l));
+  const double right = std::min(kGap + kKey + label_w + 12, 0.4 * width);
+  const double label_room = right - kGap - kKey - 12;
+  const double x0 = kLeft, x1 = width - right, top = kTop, bottom = height - kBottom;
   Range xr, yr;
   for (const ChartCurve& cv : ch.curves) {
     for (double v : cv.x) xr.add(v);
     for (double v : cv.y) yr.add(v);
   }
   if (ch.zero_line) yr.add(0);
-  xr.settle();
-  yr.settle();
-  const double pad = 0.04 * (yr.hi - yr.lo);  // room above and below the curves
-  yr.lo -= pad, yr.hi += pad;
-  const double x_step = tick_step(xr.hi - xr.lo, 10), y_step = tick_step(yr.hi - yr.lo, 6);
-  const Axis ya{std::floor(yr.lo / y_step) * y_step, std::ceil(yr.hi / y_step) * y_step, top, bottom};
-  const double xlo = std::floor(xr.lo / x_step) * x_step, xhi = std::ceil(xr.hi / x_step) * x_step;
+  const AxisRange ya_r = axis_range(yr.lo, yr.hi, 6, 0.04), xa = axis_range(xr.lo, xr.hi, 10, 0);
+  const double y_step = ya_r.step, x_step = xa.step;
+  const Axis ya{ya_r.lo, ya_r.hi, top, bottom};
+  const double xlo = xa.lo, xhi = xa.hi;
   auto X = [&](double v) { return x0 + (v - xlo) / (xhi - xlo) * (x1 - x0); };
 
   c.rect(0, 0, width, height, {255, 255, 255});
-  c.text(12, 16, ch.title, kInk);
+  c.text(12, 16, fit_to(c, ch.title, width - 16), kInk);
   c.rect(x0, top, x1 - x0, bottom - top, kPanel);
   for (const ChartBand& b : ch.bands) {
     const double a = std::clamp(X(b.x0), x0, x1), e = std::clamp(X(b.x1), x0, x1);
     if (e > a) c.rect(a, top, e - a, bottom - top, b.colour);
   }
-  for (double v = ya.lo; v <= ya.hi + y_step * 1e-6; v += y_step) {
+  for (double v = ya_r.first_tick(); v <= ya.hi + y_step * 1e-6; v += y_step) {
     c.line(x0, ya.y(v), x1, ya.y(v), kGrid, 1);
     c.line(x0 - 5, ya.y(v), x0, ya.y(v), kAxisInk, 1);
     c.text(x0 - 8, ya.y(v), tick_label(v, y_step), kInk, Anchor::end);
   }
-  for (double v = xlo; v <= xhi + x_step * 1e-6; v += x_step) {
+  for (double v = xa.first_tick(); v <= xhi + x_step * 1e-6; v += x_step) {
     c.line(X(v), top, X(v), bottom, kGrid, 1);
     c.line(X(v), bottom, X(v), bottom + 5, kAxisInk, 1);
     c.text(X(v), bottom + 16, tick_label(v, x_step), kInk, Anchor::middle);
@@ -64,7 +75,7 @@ void draw(Canvas& c, const Chart& ch, int width, int height) {
   c.line(x0, top, x0, bottom, kAxisInk, 1);
   c.line(x0, bottom, x1, bottom, kAxisInk, 1);
   c.text((x0 + x1) / 2, bottom + 40, ch.x_label, kInk, Anchor::middle);
-  c.text(12, top - 14, ch.y_label, kInk);
+  c.text(12, top - 20, ch.y_label, kInk);  // clear of the top tick's label
   if (ch.zero_line) c.line(x0, ya.y(0), x1, ya.y(0), kAxisInk, 1);
   for (const ChartMarker& m : ch.markers) {
     c.line(X(m.x), top, X(m.x), bottom, kMarker, 1, 4);
@@ -95,21 +106,21 @@ void draw(Canvas& c, const Chart& ch, int width, int height) {
     flush();
   }
 
-  // Legend, right of the panel.
+  // Legend, right of the panel, inside the picture.
   double ly = top + 8;
-  const double lx = x1 + 16;
+  const double lx = x1 + kGap;
   std::vector<std::string> shown;
   for (const ChartCurve& cv : ch.curves) {
     if (cv.label.empty() || std::find(shown.begin(), shown.end(), cv.label) != shown.end()) continue;
     shown.push_back(cv.label);
     c.line(lx, ly, lx + 26, ly, cv.colour, 2.5);
-    c.text(lx + 34, ly, cv.label, kInk);
+    c.text(lx + kKey, ly, fit_to(c, cv.label, label_room), kInk);
     ly += 22;
   }
   if (!ch.band_legend.empty()) ly += 8;
   for (const ChartLegendBand& b : ch.band_legend) {
     c.rect(lx, ly - 8, 26, 16, b.colour);
-    c.text(lx + 34, ly, b.label, kInk);
+    c.text(lx + kKey, ly, fit_to(c, b.label, label_room), kInk);
     ly += 22;
   }
 }

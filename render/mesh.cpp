@@ -207,4 +207,33 @@ void shatter(const Mesh& in, double gap, Mesh& out) {
   }
 }
 
+void split_open(const Mesh& in, int axis, const Vector3d& toward, double angle, double gap, Mesh& out) {
+  out.clear();
+  out.pos.reserve(in.pos.size());
+  out.nrm.reserve(in.nrm.size());
+  const Vector3d a = Vector3d::Unit(axis);
+  Eigen::Matrix3f turn[2];  // [0]: the half below the cut, [1]: above
+  Eigen::Vector3f shift[2];
+  for (int h = 0; h < 2; ++h) {
+    const double s = h == 0 ? -1 : 1;
+    // The half's cut face looks along -s*a; turn that toward `toward`.
+    const Vector3d k = (-s * a).cross(toward);
+    turn[h] = Eigen::Matrix3f::Identity();
+    if (k.norm() > 1e-6) turn[h] = Eigen::AngleAxisd(angle, k.normalized()).toRotationMatrix().cast<float>();
+    shift[h] = (s * gap * a).cast<float>();
+  }
+  for (size_t t = 0; t + 9 <= in.pos.size(); t += 9) {
+    const float c = in.pos[t + static_cast<size_t>(axis)] + in.pos[t + 3 + static_cast<size_t>(axis)] +
+                    in.pos[t + 6 + static_cast<size_t>(axis)];
+    const int h = c < 0 ? 0 : 1;
+    for (size_t k = 0; k < 9; k += 3) {
+      const Eigen::Vector3f q(in.pos[t + k], in.pos[t + k + 1], in.pos[t + k + 2]);
+      const Eigen::Vector3f p = turn[h] * q + shift[h];
+      const Eigen::Vector3f n = turn[h] * Eigen::Vector3f(in.nrm[t + k], in.nrm[t + k + 1], in.nrm[t + k + 2]);
+      out.pos.insert(out.pos.end(), {p.x(), p.y(), p.z()});
+      out.nrm.insert(out.nrm.end(), {n.x(), n.y(), n.z()});
+    }
+  }
+}
+
 }  // namespace afford::render

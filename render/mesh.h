@@ -36,5 +36,10 @@ void add_tube(Mesh& mesh, const Eigen::Vector3d& from, const Eigen::Vector3d& to
 void add_arrow(Mesh& mesh, const Eigen::Vector3d& tail, const Eigen::Vector3d& head, double radius);
 // The mesh in octants pushed apart by `gap` (m) each along its signs.
 void shatter(const Mesh& in, double gap, Mesh& out);
+// The mesh cut in two at the plane through the origin across axis (0, 1
+// or 2): each half moved `gap` (m) away from the cut and turned by `angle`
+// (rad) about the origin so that its cut face turns toward `toward`
+// (unit), as a nut opens: the shell's inside shows.
+void split_open(const Mesh& in, int axis, const Eigen::Vector3d& toward, double angle, double gap, Mesh& out);
 
 }  // namespace afford::render

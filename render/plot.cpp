@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "axis_range.h"
 #include "canvas.h"
 
 namespace afford::render {
@@ -17,26 +18,34 @@ constexpr Rgb kReached{40, 150, 70}, kLost{200, 60, 40};
 constexpr int kLeft = 86, kRight = 200, kTop = 58, kPanelA = 170, kGap = 34, kPanelB = 230, kLane = 24;
 
 void draw(Canvas& c, const Timeline& tl, int width, int height) {
-  const double x0 = kLeft, x1 = width - kRight;
+  // The lanes' function names (from the rules, any length) stand left of
+  // the panels: the margin grows to the longest, up to a third of the width.
+  double names = 0;
+  for (const std::string& f : tl.functions) names = std::max(names, c.text_width(f));
+  const double x0 = std::clamp(names + 20, static_cast<double>(kLeft), width / 3.0), x1 = width - kRight;
   const double t_end = std::max(tl.end_time, tl.samples.empty() ? 1.0 : tl.samples.back().t);
   auto X = [&](double t) { return x0 + t / std::max(t_end, 1e-9) * (x1 - x0); };
   const double rad2deg = 180 / std::numbers::pi;
 
   c.rect(0, 0, width, height, {255, 255, 255});
-  c.text(12, 14, tl.title + ": timeline" + (tl.has_actee ? " (actee " + tl.actee_name + ")" : std::string()), kInk);
+  const std::string title = tl.title + ": timeline" + (tl.has_actee ? " (actee " + tl.actee_name + ")" : std::string());
+  c.text(12, 14, fit_to(c, title, width - 16), kInk);
 
-  // Data ranges.
-  double a_lo = 0, a_hi = 1, f_hi = 1;
+  // Data ranges: the angle from its closed 0 deg, the forces from 0 N and
+  // through the actee's limit (axis_range.h says how the ends are chosen).
+  double a_lo = 0, a_hi = 0, f_lo = 0, f_hi = 0;
   for (const TimelineSample& s : tl.samples) {
     a_lo = std::min(a_lo, s.angle * rad2deg);
     a_hi = std::max(a_hi, s.angle * rad2deg);
+    f_lo = std::min({f_lo, s.effort, s.actee});
     f_hi = std::max({f_hi, s.effort, s.actee});
   }
   if (tl.has_actee) f_hi = std::max(f_hi, tl.limit);
-  const double a_step = tick_step(a_hi - a_lo, 5), f_step = tick_step(f_hi * 1.08, 6);
-  const Axis angle{std::floor(a_lo / a_step) * a_step, std::ceil(a_hi * 1.04 / a_step) * a_step, kTop,
-                   kTop + kPanelA};
-  const Axis force{0, std::ceil(f_hi * 1.08 / f_step) * f_step, kTop + kPanelA + kGap, kTop + kPanelA + kGap + kPanelB};
+  const AxisRange a_range = axis_range(a_lo, std::max(a_hi, a_lo + 1), 5, 0.04);
+  const AxisRange f_range = axis_range(f_lo, std::max(f_hi, f_lo + 1), 6, 0.04);
+  const double a_step = a_range.step, f_step = f_range.step;
+  const Axis angle{a_range.lo, a_range.hi, kTop, kTop + kPanelA};
+  const Axis force{f_range.lo, f_range.hi, kTop + kPanelA + kGap, kTop + kPanelA + kGap + kPanelB};
   const double lanes_top = force.bottom + kGap;
   const double lanes_bottom = lanes_top + kLane * static_cast<double>(tl.functions.size());
   const double t_step = tick_step(t_end, 10);
@@ -44,7 +53,7 @@ void draw(Canvas& c, const Timeline& tl, int width, int height) {
   // Panels with grids and tick labels.
   for (const auto& [axis, step, unit] : {std::tuple{angle, a_step, "angle [deg]"}, std::tuple{force, f_step, "force [N]"}}) {
     c.rect(x0, axis.top, x1 - x0, axis.bottom - axis.top, kPanel);
-    for (double v = axis.lo; v <= axis.hi + step * 1e-6; v += step) {
+    for (double v = std::ceil(axis.lo / step - 1e-9) * step; v <= axis.hi + step * 1e-6; v += step) {
       const double y = axis.y(v);
       c.line(x0, y, x1, y, kGrid, 1);
       c.line(x0 - 5, y, x0, y, kAxis, 1);
@@ -53,7 +62,7 @@ void draw(Canvas& c, const Timeline& tl, int width, int height) {
     for (double t = 0; t <= t_end + t_step * 1e-6; t += t_step) c.line(X(t), axis.top, X(t), axis.bottom, kGrid, 1);
     c.line(x0, axis.top, x0, axis.bottom, kAxis, 1);
     c.line(x0, axis.bottom, x1, axis.bottom, kAxis, 1);
-    c.text(12, axis.top - 14, unit, kInk);
+    c.text(x0, axis.top - 12, unit, kInk);  // over the panel: clear of the tick labels left of it
   }
   // Time axis under the lanes.
   const double t_axis = lanes_bottom + 6;
@@ -115,7 +124,7 @@ void draw(Canvas& c, const Timeline& tl, int width, int height) {
   for (size_t f = 0; f < tl.functions.size(); ++f) {
     const double y = lanes_top + kLane * (static_cast<double>(f) + 0.5);
     if (f % 2 == 0) c.rect(x0, y - kLane / 2.0, x1 - x0, kLane, {246, 247, 250});
-    c.text(x0 - 8, y, tl.functions[f], function_colour(static_cast<int>(f)), Anchor::end);
+    c.text(x0 - 8, y, fit_to(c, tl.functions[f], x0 - 12), function_colour(static_cast<int>(f)), Anchor::end);
   }
   for (const TimelineMark& m : tl.marks) {
     const double y = lanes_top + kLane * (m.function + 0.5), x = X(m.t);

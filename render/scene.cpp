@@ -23,9 +23,7 @@ struct Colour {
 // The palette (before lighting).
 constexpr Colour kFixedArm{0.58f, 0.60f, 0.64f};
 constexpr Colour kMovingArm{0.33f, 0.48f, 0.72f};
-constexpr Colour kActee{0.78f, 0.55f, 0.30f};
 constexpr Colour kStressed{0.86f, 0.20f, 0.14f};
-constexpr Colour kInside{0.95f, 0.88f, 0.70f};
 constexpr Colour kThumb{0.92f, 0.45f, 0.35f};
 constexpr Colour kFinger{0.95f, 0.72f, 0.58f};
 constexpr Colour kHand{0.95f, 0.76f, 0.64f, 0.28f};
@@ -79,6 +77,28 @@ void push_pose(const Isometry3d& pose) {
   gl().MultMatrixf(m.data());
 }
 
+Colour colour_of(const ActeeLook::Srgb& c) { return {c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f}; }
+
+// Scales by k along d (unit) and by `across` across it.
+void squash_along(const Vector3d& d, double k, double across) {
+  Eigen::Matrix4f squash = Eigen::Matrix4f::Identity();
+  squash.topLeftCorner<3, 3>() =
+      (across * Eigen::Matrix3d::Identity() + (k - across) * d * d.transpose()).cast<float>();
+  gl().MultMatrixf(squash.data());
+}
+
+// Where a nut splits: across its longest axis of those across the force,
+// so that the halves open sideways from the jaws.
+int split_axis(const Eigen::AlignedBox3d& local, const Vector3d& d) {
+  int best = 0;
+  double best_len = -1;
+  for (int a = 0; a < 3; ++a) {
+    if (std::abs(d[a]) > 0.7) continue;  // along the force
+    if (local.sizes()[a] > best_len + 1e-12) best = a, best_len = local.sizes()[a];
+  }
+  return best;
+}
+
 }  // namespace
 
 Vector3d usable_up(const Camera& c) {
@@ -88,9 +108,11 @@ Vector3d usable_up(const Camera& c) {
 }
 
 Rgb actee_base_colour() {
-  return {static_cast<std::uint8_t>(kActee.r * 255 + 0.5f), static_cast<std::uint8_t>(kActee.g * 255 + 0.5f),
-          static_cast<std::uint8_t>(kActee.b * 255 + 0.5f)};
+  const ActeeLook::Srgb c = ActeeLook{}.colour;
+  return {c[0], c[1], c[2]};
 }
+
+Rgb actee_colour(const Model& m) { return {m.actee_look.colour[0], m.actee_look.colour[1], m.actee_look.colour[2]}; }
 
 Eigen::AlignedBox3d scene_box(const Model& m, const State& s) {
   Eigen::AlignedBox3d box;
@@ -255,21 +277,41 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
     gl().PopMatrix();
   }
 
-  // The actee.
+  // The actee, in the colours and the broken look of its file.
   if (m.has_actee) {
     im.shape.clear();
     add_shape(im.shape, m.actee());
+    const ActeeLook& look = m.actee_look;
+    const Colour outside = colour_of(look.colour), inside = colour_of(look.inside);
     const double load = m.actee_limit > 0 ? std::clamp(s.actee_load / m.actee_limit, 0.0, 1.0) : 0.0;
     push_pose(s.actee_pose);
     if (s.condition == ActeeCondition::broken) {
-      const double size = m.actee().local_box().sizes().minCoeff();
-      shatter(im.shape, 0.13 * size, im.shards);
+      const Eigen::AlignedBox3d local = m.actee().local_box();
+      const double size = local.sizes().minCoeff();
+      const Vector3d d = m.actee_direction.normalized();
+      // Toward the eye, in the actee's frame: the opened halves face it.
+      const Vector3d eye =
+          (s.actee_pose.linear().transpose() * (camera.position - s.actee_pose.translation())).normalized();
+      if (look.broken == ActeeLook::Broken::halves) {
+        split_open(im.shape, split_axis(local, d), eye, 0.45, 0.10 * size, im.shards);
+      } else if (look.broken == ActeeLook::Broken::crushed) {
+        // Flattened along A_d to 40 %, a little wider across; the inside
+        // spills out between the pieces.
+        squash_along(d, 0.4, 1.2);
+        gl().PushMatrix();
+        gl().Scaled(1.08, 1.08, 1.08);
+        set_colour(inside);
+        draw(im.shape);
+        gl().PopMatrix();
+        shatter(im.shape, 0.16 * size, im.shards);
+      } else {
+        shatter(im.shape, 0.13 * size, im.shards);
+      }
       gl().CullFace(GL_FRONT);  // the inside of the shell, through the cracks
-      set_colour(kInside);
+      set_colour(inside);
       draw(im.shards);
       gl().CullFace(GL_BACK);
-      const Colour dark = mix(kActee, Colour{0.22f, 0.14f, 0.07f}, 0.55f);
-      set_colour(dark);
+      set_colour(mix(outside, Colour{0, 0, 0}, 0.12f));  // a little darker: broken
       draw(im.shards);
     } else {
       // Flattened along A_d by the compression (half from each side),
@@ -277,13 +319,9 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
       const Vector3d d = m.actee_direction.normalized();
       const double extent = std::max(m.actee().support(d), 1e-4);
       const double k = std::clamp(1 - s.actee_compression / (2 * extent), 0.3, 1.0);
-      const double across = 1 / std::sqrt(k);
-      Eigen::Matrix4f squash = Eigen::Matrix4f::Identity();
-      squash.topLeftCorner<3, 3>() =
-          (across * Eigen::Matrix3d::Identity() + (k - across) * d * d.transpose()).cast<float>();
-      gl().MultMatrixf(squash.data());
+      squash_along(d, k, 1 / std::sqrt(k));  // the volume kept
       const float tint = static_cast<float>(0.65 * load);
-      set_colour(mix(kActee, kStressed, tint));
+      set_colour(mix(outside, kStressed, tint));
       draw(im.shape);
     }
     gl().PopMatrix();

@@ -1,10 +1,10 @@
 // Offscreen rendering of one frame of a session with OSMesa (no display, no
 // GPU) and legacy fixed-function OpenGL: the acting object at its angle with
-// every part, the actee (intact; squeezed: flattened along its force
-// direction by its compression and tinted by its load; broken: its shell in
-// eight shards pushed apart, darkened, the inside showing), the fingertips
-// and a translucent hand, contact points, and force arrows whose lengths
-// scale with the force.
+// every part, the actee in its file's colours (intact; squeezed: flattened
+// along its force direction by its compression and tinted by its load;
+// broken: as its file's look says, in halves, crushed or in shards, the
+// inside showing), the fingertips and a translucent hand, contact points,
+// and force arrows whose lengths scale with the force.
 //
 // Determinism: identical input gives identical pixels. Mesa's llvmpipe is
 // told to rasterise on one thread (LP_NUM_THREADS=1, set with setenv before
@@ -70,8 +70,10 @@ double force_scale(const Model& model, const Eigen::AlignedBox3d& box);
 // from the top-left corner, in pixels.
 Eigen::Vector2d project(const Camera& camera, int w, int h, const Eigen::Vector3d& world);
 
-// The RGB the actee is drawn with before lighting (intact and unloaded).
+// The RGB an actee without a `look` is drawn with before lighting (intact
+// and unloaded), and the one the model's actee is drawn with (its look).
 Rgb actee_base_colour();
+Rgb actee_colour(const Model& model);
 
 // Owns one OSMesa context and its buffer. Not thread-safe: one per thread.
 class Renderer {

@@ -5,13 +5,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <numbers>
 #include <unistd.h>
 
+#include "frame_overlay.h"
 #include "plot.h"
 #include "png.h"
 #include "run.h"
 #include "scripted_agent.h"
+#include "text_fit.h"
 
 namespace afford::render {
 namespace {
@@ -20,33 +21,54 @@ namespace fs = std::filesystem;
 
 constexpr Rgb kWhite{255, 255, 255}, kInk{40, 44, 52};
 
-// Darkens a rectangle toward c by a (text backgrounds over the picture), as
-// Image::blend does each pixel, by a table of the 256 values of each channel.
-void shade(Image& img, int x, int y, int w, int h, Rgb c, double a) {
-  Image lookup(256, 1);
-  for (int v = 0; v < 256; ++v) {
-    lookup.set(v, 0, Rgb{static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v)});
-    lookup.blend(v, 0, c, a);
-  }
-  const std::uint8_t* table = lookup.rgb.data();  // value v of channel k: table[3 v + k]
-  const int i0 = std::max(x, 0), i1 = std::min(x + w, img.width);
-  for (int j = std::max(y, 0); j < std::min(y + h, img.height); ++j) {
-    std::uint8_t* p = &img.rgb[(static_cast<size_t>(j) * static_cast<size_t>(img.width) + static_cast<size_t>(i0)) * 3];
-    for (int i = i0; i < i1; ++i, p += 3) {
-      for (int k = 0; k < 3; ++k) p[k] = table[3 * p[k] + k];
+// Pass 1: the box swept by the tool and the actee, the most lines of info
+// a frame needs at the frames' width, and every function inferred (the
+// bars around the frames are sized from them).
+class SurveyObserver : public Observer {
+ public:
+  SurveyObserver(int width, int height) : width_(width), height_(height) {}
+  void on_start(const Model& m, const State& s, const RuleSet&) override { box.extend(scene_box(m, s)); }
+  void on_frame(const Model& m, const State& s, const RuleSet& rules, const RuleState& rs) override {
+    if (s.frame % 10 == 0) box.extend(scene_box(m, s));
+    if (width_ > 0) {
+      info_lines = std::max(info_lines, info_lines_needed(m, s, width_, height_));
+    }
+    for (const Event* e = events_begin(rs); e != events_end(rs); ++e) {
+      if (e->kind == EventKind::inferred) inferred.push_back(inferred_item(function_name(rules, e->function), e->t));
     }
   }
+  Eigen::AlignedBox3d box;
+  size_t info_lines = 1;
+  std::vector<std::string> inferred;
+
+ private:
+  int width_, height_;
+};
+
+struct Survey {
+  Eigen::AlignedBox3d box;
+  size_t info_lines = 1;
+  std::vector<std::string> inferred;
+};
+
+// Runs the session once (width 0: the box alone).
+Survey survey(const CompiledSession& session, int width, int height) {
+  SurveyObserver obs(width, height);
+  Observer* const list[] = {&obs};
+  ScriptedAgent agent(session.script);
+  run_session(session, *session.rules, agent, list);
+  return {obs.box, obs.info_lines, obs.inferred};
 }
 
-// Pass 1: the box swept by the tool and the actee.
-class BoundsObserver : public Observer {
- public:
-  void on_start(const Model& m, const State& s, const RuleSet&) override { box.extend(scene_box(m, s)); }
-  void on_frame(const Model& m, const State& s, const RuleSet&, const RuleState&) override {
-    if (s.frame % 10 == 0) box.extend(scene_box(m, s));
-  }
-  Eigen::AlignedBox3d box;
-};
+Camera camera_for(const CompiledSession& session, const Eigen::AlignedBox3d& box, double aspect) {
+  if (!session.camera.set) return frame_scene(session.model, box, aspect);
+  Camera c;
+  c.position = session.camera.position;
+  c.target = session.camera.target;
+  c.up = session.camera.up;
+  c.fov = session.camera.fov;
+  return c;
+}
 
 std::string fmt(const char* f, double a) {
   char buf[64];
@@ -63,11 +85,11 @@ std::string shell_quote(const std::string& s) {
 // Pass 2: frames, key moments, the timeline.
 class FrameObserver : public Observer {
  public:
-  FrameObserver(const RenderSessionOptions& o, const Camera& frame_cam, const Camera& tile_cam, double ground_z,
-                double force_per_newton, RenderSessionResult* result)
-      : o_(o), frame_cam_(frame_cam), tile_cam_(tile_cam), result_(result) {
-    frame_opt_.width = o.width;
-    frame_opt_.height = o.height;
+  FrameObserver(const RenderSessionOptions& o, const FrameLayout& layout, const Camera& frame_cam,
+                const Camera& tile_cam, double ground_z, double force_per_newton, RenderSessionResult* result)
+      : o_(o), layout_(layout), frame_cam_(frame_cam), tile_cam_(tile_cam), result_(result) {
+    frame_opt_.width = layout.scene.w;
+    frame_opt_.height = layout.scene.h;
     frame_opt_.supersample = o.supersample;
     frame_opt_.ground_z = ground_z;
     frame_opt_.force_scale = force_per_newton;
@@ -90,7 +112,7 @@ class FrameObserver : public Observer {
     if (s.frame <= 1) moment(m, s, "start");
     for (const Event* e = events_begin(rs); e != events_end(rs); ++e) {
       if (e->kind != EventKind::inferred) continue;
-      inferred_.push_back(function_name(rules, e->function) + fmt(" %.2f s", e->t));
+      inferred_.push_back(inferred_item(function_name(rules, e->function), e->t));
       moment(m, s, function_name(rules, e->function) + " inferred");
     }
     if (s.condition != last_condition_) {
@@ -119,14 +141,11 @@ class FrameObserver : public Observer {
   void on_end(const Model& m, const State& s, const RuleSet&, const RuleState&) override { moment(m, s, "end"); }
 
  private:
-  void decorate(Image& img, const Model& m, const State& s, const Camera& cam) {
-    if (o_.overlay) o_.overlay(img, cam, s);
-    draw_overlay(img, m, s, inferred_);
-  }
-
+  // The scene in the middle, the text in bars around it (frame_overlay.h).
   void write_frame(const Model& m, const State& s) {
-    Image img = renderer_.render(m, s, frame_cam_, frame_opt_);
-    decorate(img, m, s, frame_cam_);
+    Image scene = renderer_.render(m, s, frame_cam_, frame_opt_);
+    if (o_.overlay) o_.overlay(scene, frame_cam_, s);
+    const Image img = compose_frame(scene, layout_, info_groups(m, s), inferred_);
     char name[32];
     std::snprintf(name, sizeof name, "frame_%05d.png", next_frame_);
     const std::string path = (fs::path(o_.out_dir) / name).string();
@@ -153,6 +172,7 @@ class FrameObserver : public Observer {
   }
 
   const RenderSessionOptions& o_;
+  FrameLayout layout_;
   Camera frame_cam_, tile_cam_;
   RenderOptions frame_opt_, tile_opt_;
   RenderSessionResult* result_;
@@ -172,8 +192,8 @@ Image contact_sheet(const CompiledSession& session, const std::vector<KeyMoment>
   const int cols = std::min(4, std::max(n, 1)), rows = (n + cols - 1) / cols;
   const int pad = 10, caption = 44, title = 44;
   Image sheet(pad + cols * (tw + pad), title + rows * (th + caption + pad) + pad, {236, 238, 242});
-  draw_text(sheet, pad, 12, session.name + ": key moments", kInk, 2);
-  draw_text(sheet, pad, 30, session.description, {90, 96, 108}, 1);
+  draw_text(sheet, pad, 12, fit_text(session.name + ": key moments", sheet.width - 2 * pad, 2), kInk, 2);
+  draw_text(sheet, pad, 30, fit_text(session.description, sheet.width - 2 * pad, 1), {90, 96, 108}, 1);
   for (int i = 0; i < n; ++i) {
     const int x = pad + (i % cols) * (tw + pad), y = title + (i / cols) * (th + caption + pad);
     fill_rect(sheet, x - 1, y - 1, tw + 2, th + caption + 2, {190, 194, 202});
@@ -182,9 +202,22 @@ Image contact_sheet(const CompiledSession& session, const std::vector<KeyMoment>
     char t[32];
     std::snprintf(t, sizeof t, "%.3f s", moments[static_cast<size_t>(i)].t);
     draw_text(sheet, x + 6, y + th + 6, t, kInk, 2);
+    // The caption at scale 2 if it fits, else at 1 in up to two lines.
     const std::string& what = moments[static_cast<size_t>(i)].what;
-    const int scale = text_width(what, 2) <= tw - 12 ? 2 : 1;
-    draw_text(sheet, x + 6, y + th + 22, what, {160, 40, 30}, scale);
+    if (text_width(what, 2) <= tw - 12) {
+      draw_text(sheet, x + 6, y + th + 22, what, {160, 40, 30}, 2);
+    } else {
+      std::vector<std::string> parts;
+      for (size_t at = 0; at <= what.size();) {
+        const size_t end = std::min(what.find(", ", at), what.size());
+        parts.push_back(what.substr(at, end - at) + (end < what.size() ? "," : ""));
+        at = end + 2;
+      }
+      const std::vector<std::string> lines = flow({parts}, tw - 12, 1, " ", 2);
+      for (size_t k = 0; k < lines.size(); ++k) {
+        draw_text(sheet, x + 6, y + th + 20 + 10 * static_cast<int>(k), lines[k], {160, 40, 30}, 1);
+      }
+    }
     char idx[16];
     std::snprintf(idx, sizeof idx, "%d", i + 1);
     draw_label(sheet, x + 6, y + 6, idx, kWhite, {60, 66, 80}, 2, 3);
@@ -209,70 +242,20 @@ bool on_path(const std::string& program) {
 }
 
 Camera session_camera(const CompiledSession& session, double aspect, double* ground_z) {
-  BoundsObserver bounds;
-  {
-    Observer* const obs[] = {&bounds};
-    ScriptedAgent agent(session.script);
-    run_session(session.model, *session.rules, agent, obs);
-  }
-  const Eigen::AlignedBox3d& box = bounds.box;
-  if (ground_z != nullptr) *ground_z = box.min().z() - 0.002;
-  if (session.camera.set) {
-    Camera c;
-    c.position = session.camera.position;
-    c.target = session.camera.target;
-    c.up = session.camera.up;
-    c.fov = session.camera.fov;
-    return c;
-  }
-  return frame_scene(session.model, box, aspect);
+  const Survey sv = survey(session, 0, 0);
+  if (ground_z != nullptr) *ground_z = sv.box.min().z() - 0.002;
+  return camera_for(session, sv.box, aspect);
 }
 
-void draw_overlay(Image& img, const Model& m, const State& s, const std::vector<std::string>& inferred) {
-  const int scale = img.width >= 480 ? 2 : 1;
-  const int lh = (kGlyphHeight + 4) * scale;
-  std::vector<std::string> lines;
-  lines.push_back(fmt("t %.3f s", s.t) + fmt("   angle %.1f deg", s.theta * 180 / std::numbers::pi));
-  std::string forces = fmt("effort %.1f N", s.effort_force);
-  if (m.has_actee) forces += fmt("   actee %.1f", s.actee_force) + fmt(" / %.0f N", m.actee_limit);
-  lines.push_back(forces);
-  if (m.has_actee) {
-    lines.push_back(m.actee_name + ": " + condition_name(s.condition) + "   contacts " +
-                    std::to_string(s.object_actee.count) + (s.grasped ? "   grasped" : ""));
-  }
-  int w = 0;
-  for (const std::string& l : lines) w = std::max(w, text_width(l, scale));
-  shade(img, 0, 0, w + 12 * scale, static_cast<int>(lines.size()) * lh + 6 * scale, {20, 24, 32}, 0.62);
-  for (size_t i = 0; i < lines.size(); ++i) {
-    draw_text(img, 6 * scale, 4 * scale + static_cast<int>(i) * lh, lines[i], kWhite, scale);
-  }
-  // A key to the markers and arrows (scene.cpp's palette), bottom right.
-  {
-    struct Key {
-      Rgb c;
-      const char* text;
-    };
-    const Key keys[] = {{{250, 158, 13}, "effort"}, {{217, 26, 26}, "jaw force"}, {{38, 204, 77}, "jaw contact"},
-                        {{26, 166, 242}, "finger contact"}};
-    const int ks = 1, klh = kGlyphHeight + 5;  // small: the key must not hide the scene
-    int kw = 0;
-    for (const Key& k : keys) kw = std::max(kw, text_width(k.text, ks));
-    const int box_w = kw + 22 * ks, box_h = 4 * klh + 6 * ks;
-    const int x0 = img.width - box_w, y0 = img.height - box_h - (inferred.empty() ? 0 : lh + 6 * scale);
-    shade(img, x0, y0, box_w, box_h, {20, 24, 32}, 0.55);
-    for (int i = 0; i < 4; ++i) {
-      const int y = y0 + 4 * ks + i * klh;
-      fill_rect(img, x0 + 5 * ks, y, 7 * ks, 7 * ks, keys[i].c);
-      draw_text(img, x0 + 16 * ks, y, keys[i].text, kWhite, ks);
-    }
-  }
-  if (!inferred.empty()) {
-    std::string l = "inferred:";
-    for (const std::string& f : inferred) l += "  " + f;
-    const int y = img.height - lh - 4 * scale;
-    shade(img, 0, y - 3 * scale, text_width(l, scale) + 12 * scale, lh + 4 * scale, {20, 24, 32}, 0.62);
-    draw_text(img, 6 * scale, y, l, {255, 220, 120}, scale);
-  }
+FramePlan plan_frames(const CompiledSession& session, int width, int height) {
+  const Survey sv = survey(session, width, height);
+  FramePlan p;
+  p.layout = frame_layout(width, height, sv.info_lines, sv.inferred);
+  p.ground_z = sv.box.min().z() - 0.002;
+  // The frames' scene sits between the bars; the tiles have none.
+  p.camera = camera_for(session, sv.box, static_cast<double>(p.layout.scene.w) / p.layout.scene.h);
+  p.tile_camera = camera_for(session, sv.box, static_cast<double>(width) / height);
+  return p;
 }
 
 RenderSessionResult render_session(const CompiledSession& session, const RenderSessionOptions& o) {
@@ -287,9 +270,11 @@ RenderSessionResult render_session(const CompiledSession& session, const RenderS
   }
 
   RenderSessionResult result;
-  const double aspect = static_cast<double>(o.width) / o.height;
-  double ground_z = 0;
-  const Camera camera = session_camera(session, aspect, &ground_z);
+  const FramePlan plan = plan_frames(session, o.width, o.height);
+  const FrameLayout& layout = plan.layout;
+  const double ground_z = plan.ground_z;
+  const Camera& frame_cam = plan.camera;
+  const Camera& tile_cam = plan.tile_camera;
   // The arrows' scale stays fixed over the session.
   const double per_newton = [&] {
     std::unique_ptr<State> s = make_state(session.model);
@@ -298,11 +283,11 @@ RenderSessionResult render_session(const CompiledSession& session, const RenderS
 
   TimelineRecorder timeline(session.name);
   {
-    FrameObserver frames(o, camera, camera, ground_z, per_newton, &result);
+    FrameObserver frames(o, layout, frame_cam, tile_cam, ground_z, per_newton, &result);
     Observer* const obs[] = {&frames, &timeline};
     ScriptedAgent agent(session.script);
     frames.total_frames_ = static_cast<int>(std::floor(agent.duration() * o.fps + 1e-9)) + 1;
-    run_session(session.model, *session.rules, agent, obs);
+    run_session(session, *session.rules, agent, obs);
   }
 
   const fs::path out(o.out_dir);

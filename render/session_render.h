@@ -1,7 +1,8 @@
 // `afford render`: a whole session to pictures. Runs the session twice
 // (deterministic, so both runs are the same): first to find the box the
 // tool and the actee sweep (the default camera frames all of it), then to
-// render frames at a fixed rate with a text overlay, the key moments (the
+// render frames at a fixed rate with their text in bars around the scene
+// (frame_overlay.h), the key moments (the
 // start, each inferred function, each change of the number of tool-actee
 // contacts, the break) into a contact sheet, and the timeline plot.
 #pragma once
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "frame_overlay.h"
 #include "image.h"
 #include "scene.h"
 #include "session.h"
@@ -25,8 +27,9 @@ struct RenderSessionOptions {
   bool mp4 = true;            // and session.mp4 through ffmpeg, when on PATH
   int max_moments = 16;       // tiles on the contact sheet
   const Guides* guides = nullptr;  // drawn in every picture when set (not owned)
-  // Draws extra content (the guides) into each rendered picture, after
-  // the scene: given the image, the camera and the state.
+  // Draws extra content into each rendered scene picture (a frame's is the
+  // part between its bars), after the scene: given the image, the camera
+  // and the state.
   std::function<void(Image&, const Camera&, const State&)> overlay;
   // Called after each PNG frame is written with the frames done and the
   // frames the session will have (for progress on a terminal).
@@ -53,9 +56,15 @@ RenderSessionResult render_session(const CompiledSession& session, const RenderS
 // `ground_z` gets the height of the grid under it (m, world).
 Camera session_camera(const CompiledSession& session, double aspect, double* ground_z);
 
-// The text overlay of a frame: time, angle, forces, the actee's condition,
-// and the functions inferred so far.
-void draw_overlay(Image& img, const Model& model, const State& state, const std::vector<std::string>& inferred);
+// How render_session lays out a session's frames of width x height px: the
+// bars and the scene between them (frame_overlay.h), the scene's camera,
+// the contact sheet tiles' camera (no bars) and the ground's height (m).
+struct FramePlan {
+  FrameLayout layout;
+  Camera camera, tile_camera;
+  double ground_z = 0;
+};
+FramePlan plan_frames(const CompiledSession& session, int width, int height);
 
 // Whether an executable is on PATH.
 bool on_path(const std::string& program);

@@ -271,7 +271,7 @@ TEST(BadInputActee, ExtraKey) {
   const std::string e = actee_error(kWalnut + "colour: brown\n");
   EXPECT_THAT(e, HasSubstr("bad.yaml:10:1:"));
   EXPECT_THAT(e, HasSubstr("expected one of the keys of an actee file (actee, description, shape, "
-                           "mass, force_direction, limit, stiffness, breaks, friction, effects), found 'colour'"));
+                           "mass, force_direction, limit, stiffness, breaks, friction, effects, look), found 'colour'"));
 }
 
 TEST(BadInputAgent, MisspeltFingerSaysDidYouMean) {

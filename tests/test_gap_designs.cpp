@@ -2,7 +2,7 @@
 // trace whose actee cracks in the first cycle while the tool goes on,
 // closing-only strokes, one orientation, a noise-free trace, white angle
 // noise through a heavy arm, ringing after contact, a force sensor's gain
-// error. Every trace is written by the formulas here (moment balance of
+// error, a late force sensor after rests. Every trace is written by the formulas here (moment balance of
 // the shipped nutcracker: 2000 N/m at 10 mm, 1.5 N preload, 0.01 N*m of
 // friction, rest 30 deg, measured at 160 mm), not by the solver.
 #include <gmock/gmock.h>
@@ -230,6 +230,59 @@ TEST(GapDesigns, ANoiseFreeTraceWithFrictionIsExplained) {
   EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
   EXPECT_TRUE(names(d, {EffectKind::pivot_friction})) << report_text(d);
   EXPECT_GT(d.noise, 1e-7) << report_text(d);  // 1e-6 / sqrt(12), not 1e-16
+}
+
+// Ramps of 10 deg, in 0.2 s and in 0.5 s by turns, each from and to a
+// rest of 0.4 s: the motion at t, and the direction of the last stroke
+// (-1 closing) for the rest after it.
+Motion ramps(double t, double* last_direction) {
+  const double hold = 0.4, amp = 5 * kDeg, fast = 0.2, slow = 0.5;
+  double u = std::fmod(t, 2 * (fast + slow + 2 * hold));
+  // Four strokes: fast closing, fast opening, slow closing, slow opening.
+  for (int stroke = 0; stroke < 4; ++stroke) {
+    const double ramp = stroke < 2 ? fast : slow;
+    if (u < ramp + hold || stroke == 3) {
+      const double dir = stroke % 2 == 0 ? -1.0 : 1.0;
+      const double from = stroke % 2 == 0 ? 30 * kDeg : 20 * kDeg, w = kPi / ramp;
+      *last_direction = dir;
+      if (u >= ramp) return Motion{from + dir * 2 * amp, 0, 0};
+      return Motion{from + dir * amp * (1 - std::cos(w * u)), dir * amp * w * std::sin(w * u),
+                    dir * amp * w * w * std::cos(w * u)};
+    }
+    u -= ramp + hold;
+  }
+  return Motion{};
+}
+
+TEST(GapDesigns, ALateSensorAfterRestsAndReversalsIsNamed) {
+  // The ramps read by a force sensor 40 ms late. At rest the hand keeps
+  // the friction of the last stroke (it stops pushing no further than
+  // needed), so just after each start the late sensor still reads a
+  // friction the model, at rest, cannot know: those readings are left
+  // out, and what is left is the delay alone. Two speeds and the arm's
+  // inertia (known to the file) tell the delay from damping: on one
+  // sine-shaped ramp a late sensor reads as damping, through the inertia
+  // too.
+  Truth truth;
+  truth.effort_noise = 0.005;
+  truth.inertia = 0.004;
+  constexpr double kLate = 0.040;  // s
+  double unused = 0;
+  auto motion = [&](double t) { return ramps(t, &unused); };
+  auto late = [&](double t, const Motion& now) {
+    double last = 0;
+    const Motion then = ramps(std::max(0.0, t - kLate), &last);
+    const double held = then.omega == 0 ? -0.01 * last : 0.0;  // N*m, friction kept at rest
+    return torque(truth, then.theta, then.omega, then.alpha, 0) + held -
+           torque(truth, now.theta, now.omega, now.alpha, 0);
+  };
+  const Diagnosis d =
+      diagnose(load_measurement(measurement("late", {{"a.csv", trace(truth, 4, 8, 0, motion, late)}},
+                                            "effects: {arm_inertia: {inertia: 0.004 kg*m^2}}\n")
+                                    .string()));
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  EXPECT_TRUE(names(d, {EffectKind::sensor_latency})) << report_text(d);
+  for (const EffectFit& e : d.effects) EXPECT_NEAR(e.value[0], kLate, 0.003) << report_text(d);
 }
 
 TEST(GapDesigns, WhiteAngleNoiseThroughAHeavyArmIsNoEffect) {

@@ -188,7 +188,7 @@ TEST(RuleCaseSession, InPlaceTakesTheCasesNameAndNote) {
 
 TEST(RuleCaseSession, InPlaceUnknownKey) {
   EXPECT_EQ(case_error(inline_with_line(8, "  scirpt:")),
-            at(8, 3) + "expected one of the keys of the session in place (session, description, object, actee, "
+            at(8, 3) + "expected one of the keys of the session in place (session, description, object, actee, actees, "
                        "agent, rules, grasps, timestep, contact_tolerance, script), found 'scirpt' (did you mean "
                        "'script'?)");
 }

@@ -42,7 +42,7 @@ sed -i 's/^limit: oops/limit: 378 N/' actees/walnut.yaml          # fixed: crash
 wait_for 4 "watching"
 [ "$(grep -c '^crash at' log)" -eq 2 ] || { echo "watch_test: no crash after the fix"; cat log; exit 1; }
 
-sed -i 's/- name: crash/- name: crack/' rules/functions.yaml        # a function model edited
+sed -i 's/- name: crash/- name: crack/; s/carry, crash]/carry, crack]/' rules/functions.yaml  # a function renamed, in its strength too
 wait
 grep -q '^crack at' log || { echo "watch_test: the edited function model was not used"; cat log; exit 1; }
 cat log
