@@ -80,6 +80,28 @@ void print_runs(const Guides& g, int index) {
   flush();
 }
 
+// The stable orientation's torques at rest, and what they mean for the
+// tool left alone that way up.
+void print_stable_turn(const GuideFacts& f) {
+  const double hold = f.spring_at_rest + f.friction_at_rest;  // N*m, what keeps the arm open against a closing weight
+  std::cout << "  turned " << q(f.stable_turn, dim::angle) << " about its length, the plane parallel to gravity:\n";
+  auto way = [&](const char* where, double weight) {
+    std::cout << "    the moving arm " << where << ": its weight " << q(std::abs(weight), dim::torque)
+              << (weight < 0 ? " closing" : " opening") << " at rest";
+    if (weight >= 0) {
+      std::cout << ", the arm rests open\n";
+    } else if (-weight <= hold) {
+      std::cout << ", against the spring's " << q(f.spring_at_rest, dim::torque) << " and the pivot's "
+                << q(f.friction_at_rest, dim::torque) << ": the arm rests open\n";
+    } else {
+      std::cout << ", more than the spring's " << q(f.spring_at_rest, dim::torque) << " and the pivot's "
+                << q(f.friction_at_rest, dim::torque) << ": the arm falls closed unless held\n";
+    }
+  };
+  way("above", f.weight_above);
+  way("below", f.weight_below);
+}
+
 void print_text(const Guides& g, const std::string& guides_file, const std::string& actee_dir) {
   const GuideFacts& f = g.facts;
   std::cout << "guides for " << g.object << " (" << guides_file << "), lever " << pattern_name(f.pattern) << "\n";
@@ -98,6 +120,7 @@ void print_text(const Guides& g, const std::string& guides_file, const std::stri
                   << (f.plane_to_gravity < 0.1 ? "parallel: the stable orientation of Sec. 4.4"
                                                : "Sec. 4.4: most stable with the plane parallel to gravity")
                   << ")\n";
+        if (f.stable_turn_found) print_stable_turn(f);
         break;
       case GuideKind::interaction_space:
         std::cout << "  interaction space: from " << q(f.space.from, dim::length) << " to "
@@ -179,6 +202,13 @@ void print_json(const Guides& g, const Json& thresholds) {
       {"functional_pose",
        {{"position", vec(f.functional_pose.translation())}, {"rotation", {vec(r.row(0)), vec(r.row(1)), vec(r.row(2))}}}},
       {"plane_to_gravity", num(f.plane_to_gravity)},
+      {"stable_orientation",
+       f.stable_turn_found ? Json{{"turn", num(f.stable_turn)},
+                                  {"weight_above", num(f.weight_above)},
+                                  {"weight_below", num(f.weight_below)},
+                                  {"spring_at_rest", num(f.spring_at_rest)},
+                                  {"friction_at_rest", num(f.friction_at_rest)}}
+                           : Json(nullptr)},
       {"interaction_space",
        {{"from", num(f.space.from)}, {"to", num(f.space.to)}, {"gap_from", num(f.space.gap_from)},
         {"gap_to", num(f.space.gap_to)}}},

@@ -10,6 +10,7 @@
 #include "lever.h"
 #include "load.h"
 #include "model.h"
+#include "terms.h"
 #include "yaml_reader.h"
 
 namespace afford {
@@ -299,6 +300,40 @@ std::string fixed2(double v) {
   return buf;
 }
 
+// The paper's stable orientation (GuideFacts): the turn about the tool's
+// x axis that puts the symmetry plane's normal across gravity with the
+// moving arm (+y of the object frame) up, and the moving arm's weight
+// about the pivot there and half a turn on. The weight is the model's own
+// (the gravity effect's: the moving arm's share of the mass at its
+// centroid), whether or not the file switches gravity on.
+void stable_turn(const Model& m, const Vector3d& normal, const Vector3d& gravity, GuideFacts& f) {
+  const Eigen::Matrix3d pose = m.object_start.linear();
+  auto across = [&](double phi) { return (pose * Eigen::AngleAxisd(phi, Vector3d::UnitX()) * normal).dot(gravity); };
+  constexpr int kSteps = 360;  // one degree apart, then halved down to the root
+  for (int i = 0; i < kSteps && !f.stable_turn_found; ++i) {
+    double lo = 2 * M_PI * i / kSteps, hi = 2 * M_PI * (i + 1) / kSteps;
+    if ((across(lo) > 0) == (across(hi) > 0) && across(lo) != 0) continue;
+    for (int k = 0; k < 60; ++k) ((across(lo) > 0) == (across(0.5 * (lo + hi)) > 0) ? lo : hi) = 0.5 * (lo + hi);
+    const Eigen::Matrix3d turned = pose * Eigen::AngleAxisd(lo, Vector3d::UnitX()).toRotationMatrix();
+    if ((turned * Vector3d::UnitY()).dot(gravity) > 0) continue;  // the moving arm below: the other root
+    f.stable_turn_found = true;
+    f.stable_turn = lo;
+  }
+  if (!f.stable_turn_found) return;
+  Model weighed = m;
+  weighed.gravity = true;
+  weighed.gravity_extra = 0;
+  auto weight = [&](double phi) {
+    double c = 0, s = 0;
+    gravity_coefficients(weighed, pose * Eigen::AngleAxisd(phi, Vector3d::UnitX()).toRotationMatrix(), &c, &s);
+    return c * std::cos(m.theta_rest) + s * std::sin(m.theta_rest);
+  };
+  f.weight_above = weight(f.stable_turn);
+  f.weight_below = weight(f.stable_turn + M_PI);
+  f.spring_at_rest = spring_torques(m, m.theta_rest).preload;
+  f.friction_at_rest = m.friction_torque;
+}
+
 void add_symmetry_plane(const Model& m, int index, const GuideSpec& g, Guides& out) {
   const Eigen::AlignedBox3d box = object_box(m);
   GuideRect r;
@@ -341,6 +376,7 @@ void add_symmetry_plane(const Model& m, int index, const GuideSpec& g, Guides& o
   f.functional_pose = m.object_start;
   const Vector3d n_world = m.object_start.linear() * r.normal;
   f.plane_to_gravity = std::asin(std::min(1.0, std::abs(n_world.dot(g.gravity.normalized()))));
+  stable_turn(m, r.normal, g.gravity.normalized(), f);
   out.labels.push_back({index, Arm::fixed, "plane of symmetry", r.centre + r.u * r.half_u + r.v * r.half_v, s.colour});
   out.labels.push_back({index, Arm::fixed, "gravity", s.b, s.colour});
 }

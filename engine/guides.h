@@ -138,6 +138,17 @@ struct GuideFacts {
   Eigen::Vector3d symmetry_normal = Eigen::Vector3d::UnitZ();  // unit, object frame
   Eigen::Isometry3d functional_pose = Eigen::Isometry3d::Identity();  // object frame in the world
   double plane_to_gravity = 0;  // rad, angle between the symmetry plane at the functional pose and gravity (0: parallel)
+  // The tool turned about its length (its x axis) from the functional pose
+  // until the plane is parallel to gravity, the paper's stable orientation
+  // (Sec. 4.4): the torques about the pivot at rest (N*m, opening
+  // positive) with the moving arm above the fixed one and below it. Where
+  // the weight above closes the arm harder than the spring and the
+  // pivot's friction hold it open, the tool cannot rest open that way up.
+  bool stable_turn_found = false;  // false: no turn about x makes the plane parallel to gravity
+  double stable_turn = 0;          // rad, about x, the moving arm above
+  double weight_above = 0, weight_below = 0;  // N*m, the moving arm's weight about the pivot at rest
+  double spring_at_rest = 0;       // N*m, the spring's preload about the pivot
+  double friction_at_rest = 0;     // N*m, the pivot's friction (holds either way)
   // actee guide
   InteractionSpace space;
   std::vector<ActeeFit> actees;  // in the order given (file name order for a folder)

@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "derive.h"
+#include "rig.h"
 #include "guides.h"
 #include "lever.h"
 #include "load.h"
@@ -183,6 +184,27 @@ TEST(GuidesCompute, SymmetryPlaneAndFunctionalPose) {
     // The shipped poses keep the pivot axis (the plane's normal) vertical.
     EXPECT_NEAR(c.guides.facts.plane_to_gravity, std::numbers::pi / 2, 1e-9);
   }
+}
+
+TEST(GuidesCompute, TheStableOrientationsWeightWorkedByHand) {
+  // A type 2 tool of two equal boxes, 180 x 10 x 16 mm, the fixed one at
+  // y = -5 mm and the moving one at y = +5 mm, 100 g in all: the moving arm
+  // has 50 g at (90, 5) mm of its frame. At rest (50 deg) that is (90 cos 50
+  // - 5 sin 50, 90 sin 50 + 5 cos 50) = (54.02, 72.16) mm. Turned 90 deg
+  // about x, the moving arm above, gravity is -y of the object frame: the
+  // weight's torque about the pivot is x * (-m g) = -0.05402 * 0.05 * 9.81
+  // = -0.02650 N*m (closing), +0.02650 below. The spring's preload, 2 N at
+  // 30 mm, holds 0.06 N*m: the arm rests open both ways.
+  const std::string yaml = test::tool_yaml("t2", "type2", 0, 180, 50, 500, 30, 2, 110, 170, 20, 70);
+  const Model m = compile(read_object(load_yaml_string(yaml, "tool.yaml")), nullptr, nullptr, ModelOptions{});
+  const GuideFacts f = compute_guides(m, shipped_guides()).facts;
+  ASSERT_TRUE(f.stable_turn_found);
+  EXPECT_NEAR(std::abs(std::remainder(f.stable_turn, 2 * std::numbers::pi)), std::numbers::pi / 2, 1e-9);
+  const double x = 0.090 * std::cos(50 * test::kDeg) - 0.005 * std::sin(50 * test::kDeg);
+  EXPECT_NEAR(f.weight_above, -x * 0.05 * 9.81, 2e-4);
+  EXPECT_NEAR(f.weight_below, x * 0.05 * 9.81, 2e-4);
+  EXPECT_NEAR(f.spring_at_rest, 0.06, 1e-12);
+  EXPECT_EQ(f.friction_at_rest, 0);
 }
 
 TEST(GuidesCompute, InteractionSpaceMatchesDerive) {

@@ -14,6 +14,7 @@
 #include "script.h"
 #include "session.h"
 #include "state.h"
+#include "test_sessions.h"
 #include "test_util.h"
 
 namespace afford {
@@ -143,22 +144,8 @@ TEST(Reach, TheChainStopsAtItsReach) {
 
 // ------------------------------------------------------------ sessions
 
-const std::string kName = kSource + "/sessions/test.yaml";
-const std::string kSession =
-    "session: test\n"                                                   // 1
-    "description: a test session\n"                                     // 2
-    "object: ../objects/nutcracker.yaml\n"                              // 3
-    "actee: {file: ../actees/walnut.yaml, at: 60 mm}\n"                 // 4
-    "agent: ../agents/hand.yaml\n"                                      // 5
-    "rules: ../rules/functions.yaml\n"                                  // 6
-    "grasps: ../rules/grasps.yaml\n"                                    // 7
-    "script:\n"                                                         // 8
-    "  - t: 0 s\n"                                                      // 9
-    "    hand: {position: [80 mm, 40 mm, 190 mm]}\n"                    // 10
-    "    grip: {thumb: 160 mm, index: 160 mm, squeeze: 0 mm}\n"         // 11
-    "    posture: medium_wrap\n"                                        // 12
-    "  - t: 1 s\n"                                                      // 13
-    "    grip: {thumb: 160 mm, index: 160 mm, squeeze: 10 mm}\n";       // 14
+const std::string& kName = test::kSessionName;
+const std::string& kSession = test::kNutcrackerSession;  // lines 1 to 14
 
 std::string session_error(const std::string& yaml) {
   return thrown<DataError>([&] { (void)read_session(load_yaml_string(yaml, kName)); });

@@ -25,9 +25,11 @@
 #include "scripted_agent.h"
 #include "session.h"
 #include "session_render.h"
+#include "test_sessions.h"
 #include "test_util.h"
 
 namespace afford {
+using test::state_at;
 namespace {
 
 namespace fs = std::filesystem;
@@ -39,20 +41,6 @@ const std::string kReferences = kSource + "/tests/data/render/";
 const CompiledSession& nutcracker() {
   static const CompiledSession s = load_session(kSource + "/sessions/paper-nutcracker.yaml");
   return s;
-}
-
-// The session's state after its frames up to time t (s).
-std::unique_ptr<State> state_at(const CompiledSession& s, double t) {
-  std::unique_ptr<State> state = make_state(s.model);
-  ScriptedAgent agent(s.script);
-  Sample sample;
-  for (std::int64_t k = 1; static_cast<double>(k) * s.model.timestep <= t + 1e-9; ++k) {
-    const double tk = static_cast<double>(k) * s.model.timestep;
-    agent.sample_at(tk, &sample);
-    sample.t = tk;
-    step(s.model, *state, sample);
-  }
-  return state;
 }
 
 // One camera for every test scene: the tool and the walnut at rest.

@@ -14,9 +14,11 @@
 #include "scene.h"
 #include "scripted_agent.h"
 #include "session.h"
+#include "test_sessions.h"
 #include "test_util.h"
 
 namespace afford {
+using test::state_at;
 namespace {
 
 namespace fs = std::filesystem;
@@ -105,19 +107,6 @@ TEST(ActeeLook, EveryShippedActeeHasItsOwnColour) {
 }
 
 // ---------------------------------------------------------------- pixels
-
-std::unique_ptr<State> state_at(const CompiledSession& s, double t) {
-  std::unique_ptr<State> state = make_state(s.model);
-  ScriptedAgent agent(s.script);
-  Sample sample;
-  for (std::int64_t k = 1; static_cast<double>(k) * s.model.timestep <= t + 1e-9; ++k) {
-    const double tk = static_cast<double>(k) * s.model.timestep;
-    agent.sample_at(tk, &sample);
-    sample.t = tk;
-    step(s.model, *state, sample);
-  }
-  return state;
-}
 
 render::RenderOptions plain() {
   render::RenderOptions o;

@@ -18,6 +18,7 @@
 #include "run.h"
 #include "scripted_agent.h"
 #include "session.h"
+#include "test_sessions.h"
 #include "trace.h"
 
 namespace afford::test {
@@ -27,9 +28,7 @@ using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
 const std::string kSource = AFFORD_SOURCE_DIR;
-// Session documents in tests are named as if they sat in sessions/, so that
-// their relative paths reach the shipped files.
-const std::string kName = kSource + "/sessions/test.yaml";
+const std::string& kName = kSessionName;
 
 // ------------------------------------------------------------ helpers
 
@@ -40,22 +39,8 @@ std::string indent(const std::string& text, int spaces) {
   return out;
 }
 
-// A nutcracker session with a walnut at 60 mm. Line numbers in the comments.
-const std::string kSession =
-    "session: test\n"                                                   // 1
-    "description: a test session\n"                                     // 2
-    "object: ../objects/nutcracker.yaml\n"                              // 3
-    "actee: {file: ../actees/walnut.yaml, at: 60 mm}\n"                 // 4
-    "agent: ../agents/hand.yaml\n"                                      // 5
-    "rules: ../rules/functions.yaml\n"                                  // 6
-    "grasps: ../rules/grasps.yaml\n"                                    // 7
-    "script:\n"                                                         // 8
-    "  - t: 0 s\n"                                                      // 9
-    "    hand: {position: [80 mm, 40 mm, 190 mm]}\n"                    // 10
-    "    grip: {thumb: 160 mm, index: 160 mm, squeeze: 0 mm}\n"         // 11
-    "    posture: medium_wrap\n"                                        // 12
-    "  - t: 1 s\n"                                                      // 13
-    "    grip: {thumb: 160 mm, index: 160 mm, squeeze: 10 mm}\n";       // 14
+// A nutcracker session with a walnut at 60 mm (test_sessions.h, lines 1 to 14).
+const std::string& kSession = kNutcrackerSession;
 
 // kSession with line `line` (1-based) replaced.
 std::string with_line(int line, const std::string& text) {

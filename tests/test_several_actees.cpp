@@ -12,6 +12,7 @@
 #include "run.h"
 #include "scripted_agent.h"
 #include "session.h"
+#include "test_sessions.h"
 #include "trace.h"
 
 namespace afford::test {
@@ -20,7 +21,7 @@ namespace {
 using ::testing::HasSubstr;
 
 const std::string kSource = AFFORD_SOURCE_DIR;
-const std::string kName = kSource + "/sessions/test.yaml";
+const std::string& kName = kSessionName;
 
 // Each break: which actee, when, and the load it broke at.
 struct Breaks : Observer {
@@ -60,21 +61,9 @@ TEST(SeveralActees, EachCracksAtItsOwnLimit) {
   EXPECT_EQ(crashes, 2);
 }
 
-// A nutcracker session gripped at the start (line numbers in comments).
+// The nutcracker gripped at the start (test_sessions.h).
 std::string session_yaml(const std::string& actees, const std::string& keyframes) {
-  return "session: test\n"                                            // 1
-         "description: several actees\n"                              // 2
-         "object: ../objects/nutcracker.yaml\n" +                     // 3
-         actees +                                                     // 4..
-         "agent: ../agents/hand.yaml\n"
-         "rules: ../rules/functions.yaml\n"
-         "grasps: ../rules/grasps.yaml\n"
-         "script:\n"
-         "  - t: 0 s\n"
-         "    hand: {position: [80 mm, 40 mm, 190 mm]}\n"
-         "    grip: {thumb: 160 mm, index: 160 mm, squeeze: 0 mm}\n"
-         "    posture: medium_wrap\n" +
-         keyframes;
+  return nutcracker_session(actees, keyframes);
 }
 
 const std::string kTwo =
@@ -136,7 +125,7 @@ TEST(SeveralActees, MistakesAreLocated) {
   EXPECT_THAT(error_of(session_yaml(kTwo, "  - after: 1 s\n    actee: hazlenut\n")),
               HasSubstr("test.yaml:16:12: expected an actee of the session's 'actees:' (walnut, nut), found "
                         "'hazlenut'"));
-  EXPECT_THAT(error_of(session_yaml("actee: {file: ../actees/walnut.yaml, at: 60 mm}\n", "  - after: 1 s\n    actee: walnut\n")),
+  EXPECT_THAT(error_of(session_yaml(kWalnutAt60, "  - after: 1 s\n    actee: walnut\n")),
               HasSubstr("test.yaml:14:12: expected no 'actee:' here (the session lists no 'actees:'"));
   EXPECT_THAT(error_of(session_yaml("actee: {file: ../actees/walnut.yaml, at: 60 mm}\n" + kTwo, "")),
               HasSubstr("expected either 'actee' or 'actees' (several), found both"));

@@ -12,6 +12,7 @@
 #include "scripted_agent.h"
 #include "session.h"
 #include "squeeze.h"
+#include "test_sessions.h"
 
 namespace afford::test {
 namespace {
@@ -65,24 +66,10 @@ TEST(SqueezeUntil, AnActeeForceWorkedByHand) {
   EXPECT_THAT(why, HasSubstr("the hand's most, 20 N at 150 mm from the fulcrum, gives the nut 69."));
 }
 
-// The nutcracker with a walnut at 60 mm, gripped from the start (line
-// numbers in the comments).
-const std::string kName = std::string(AFFORD_SOURCE_DIR) + "/sessions/test.yaml";
-std::string session_yaml(const std::string& keyframes) {
-  return "session: test\n"                                          // 1
-         "description: squeezed by force\n"                         // 2
-         "object: ../objects/nutcracker.yaml\n"                     // 3
-         "actee: {file: ../actees/walnut.yaml, at: 60 mm}\n"        // 4
-         "agent: ../agents/hand.yaml\n"                             // 5
-         "rules: ../rules/functions.yaml\n"                         // 6
-         "grasps: ../rules/grasps.yaml\n"                           // 7
-         "script:\n"                                                // 8
-         "  - t: 0 s\n"                                             // 9
-         "    hand: {position: [80 mm, 40 mm, 190 mm]}\n"           // 10
-         "    grip: {thumb: 160 mm, index: 160 mm, squeeze: 0 mm}\n"  // 11
-         "    posture: medium_wrap\n" +                             // 12
-         keyframes;                                                 // 13 on
-}
+// The nutcracker with a walnut at 60 mm, gripped from the start, then
+// `keyframes` (test_sessions.h: from line 13).
+std::string session_yaml(const std::string& keyframes) { return nutcracker_session(kWalnutAt60, keyframes); }
+const std::string& kName = kSessionName;
 
 std::string error_of(const std::string& keyframes) {
   try {
