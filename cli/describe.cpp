@@ -235,9 +235,12 @@ int describe(const DescribeOptions& o) {
 
 void add_describe(CLI::App& app, Run* run) {
   CLI::App* cmd = app.add_subcommand(
-      "describe", "what the model derives from an object file (lever, advantage, interaction space, fits) or a session (its grips)");
+      "describe",
+      "what the model derives from an object file (lever, advantage, interaction space, fits) or a session (its grips)");
   auto o = std::make_shared<DescribeOptions>();
-  CLI::Option* file = cmd->add_option("FILE", o->file, "an object file (objects/*.yaml) or a session file (sessions/*.yaml)")->type_name(kFile);
+  CLI::Option* file =
+      cmd->add_option("FILE", o->file, "an object file (objects/*.yaml) or a session file (sessions/*.yaml)")
+          ->type_name(kFile);
   cmd->add_option("--actees", o->actee_dir, "the folder of actees to fit (default: the shipped actees)")
       ->type_name(kDir);
   cmd->add_flag("--effects", o->effects, "list the optional effects a file can switch on, instead of a FILE")

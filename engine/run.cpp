@@ -21,7 +21,8 @@ RunResult run_with_changes(const Model& first, std::span<const Model> models, st
   // The last frame is the one at the source's end, within rounding: a
   // script of 2 s at 1 ms runs 2000 frames.
   const double duration = source.duration();
-  const double last = std::isfinite(duration) ? std::floor(duration / first.timestep + 1e-9) : std::numeric_limits<double>::infinity();
+  const double last = std::isfinite(duration) ? std::floor(duration / first.timestep + 1e-9)
+                                               : std::numeric_limits<double>::infinity();
   RunResult result;
   Sample sample;
   for (std::int64_t k = 1; static_cast<double>(k) <= last; ++k) {

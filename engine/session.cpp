@@ -55,6 +55,30 @@ SessionCamera read_camera(const Node& node) {
   return c;
 }
 
+// A keyframe's `actee:` names one of the session's `actees:`: its index,
+// and when the script takes it (the first keyframe's: from the start).
+void take_actees(ScriptSpec& script, CompiledSession& s) {
+  for (size_t i = 0; i < script.keyframes.size(); ++i) {
+    KeyframeSpec& k = script.keyframes[i];
+    if (k.actee.empty()) continue;
+    if (s.actee_names.empty()) {
+      fail(k.actee_loc, "no 'actee:' here (the session lists no 'actees:' to take one of)", "'" + k.actee + "'");
+    }
+    const auto it = std::find(s.actee_names.begin(), s.actee_names.end(), k.actee);
+    if (it == s.actee_names.end()) {
+      std::string expected = "an actee of the session's 'actees:' (";
+      for (size_t j = 0; j < s.actee_names.size(); ++j) expected += (j ? ", " : "") + s.actee_names[j];
+      fail(k.actee_loc, expected + ")", "'" + k.actee + "'" + did_you_mean(k.actee, s.actee_names));
+    }
+    k.actee_index = static_cast<int>(it - s.actee_names.begin());
+    if (i == 0) {
+      s.first_actee = static_cast<size_t>(k.actee_index);
+    } else {
+      s.actee_changes.push_back({k.t, static_cast<size_t>(k.actee_index)});
+    }
+  }
+}
+
 }  // namespace
 
 const MapSchema& session_schema() {
@@ -129,7 +153,9 @@ CompiledSession read_session(const Node& root) {
       read_named_actee_entry((*list)[i], files, &entry.first, &placed, &name);
       entry.second = placed.actee;
       for (const std::string& before : s.actee_names) {
-        if (before == name) (*list)[i].fail("an actee named apart from the others (give it a 'name')", "'" + name + "' again");
+        if (before == name) {
+          (*list)[i].fail("an actee named apart from the others (give it a 'name')", "'" + name + "' again");
+        }
       }
       s.actee_names.push_back(name);
       several.push_back(std::move(entry));
@@ -144,24 +170,7 @@ CompiledSession read_session(const Node& root) {
   if (std::optional<Node> cam = m.optional("camera")) s.camera = read_camera(*cam);
 
   s.rules = load_rules(rules_path);
-  // A keyframe's `actee:` names one of `actees:`.
-  for (size_t i = 0; i < script.keyframes.size(); ++i) {
-    KeyframeSpec& k = script.keyframes[i];
-    if (k.actee.empty()) continue;
-    if (s.actee_names.empty()) fail(k.actee_loc, "no 'actee:' here (the session lists no 'actees:' to take one of)", "'" + k.actee + "'");
-    const auto it = std::find(s.actee_names.begin(), s.actee_names.end(), k.actee);
-    if (it == s.actee_names.end()) {
-      std::string expected = "an actee of the session's 'actees:' (";
-      for (size_t j = 0; j < s.actee_names.size(); ++j) expected += (j ? ", " : "") + s.actee_names[j];
-      fail(k.actee_loc, expected + ")", "'" + k.actee + "'" + did_you_mean(k.actee, s.actee_names));
-    }
-    k.actee_index = static_cast<int>(it - s.actee_names.begin());
-    if (i == 0) {
-      s.first_actee = static_cast<size_t>(k.actee_index);
-    } else {
-      s.actee_changes.push_back({k.t, static_cast<size_t>(k.actee_index)});
-    }
-  }
+  take_actees(script, s);
   if (several.empty()) {
     s.model = compile(object, actee ? &*actee : nullptr, &agent, options);
     s.warnings = setup_warnings(s.model, object.spring.loc);
@@ -172,10 +181,8 @@ CompiledSession read_session(const Node& root) {
       s.actee_models.push_back(compile(object, &spec, &agent, entry_options));
       // The spring's warnings once, each actee's own once.
       for (const Warning& w : setup_warnings(s.actee_models.back(), object.spring.loc)) {
-        if (std::find_if(s.warnings.begin(), s.warnings.end(), [&](const Warning& x) { return x.message == w.message; }) ==
-            s.warnings.end()) {
-          s.warnings.push_back(w);
-        }
+        const auto same = [&](const Warning& x) { return x.message == w.message; };
+        if (std::none_of(s.warnings.begin(), s.warnings.end(), same)) s.warnings.push_back(w);
       }
     }
     s.model = s.actee_models[s.first_actee];
