@@ -10,6 +10,7 @@
 #include "backdrop.h"
 #include "gl_api.h"
 #include "mesh.h"
+#include "reach.h"
 
 namespace afford::render {
 namespace {
@@ -431,17 +432,33 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
     }
   }
 
-  // The hand, translucent, last: the palm box and straight fingers to the tips.
+  // The hand, translucent, last: the palm box and the fingers. With the
+  // agent's reach each finger is its chain of links (engine/reach.h), the
+  // joints where its kinematics put them; without it a straight finger
+  // from a knuckle to the tip.
   if (o.hand && m.has_agent) {
     gl().Enable(GL_BLEND);
     gl().DepthMask(GL_FALSE);
     im.extra.clear();
     add_box(im.extra, kPalmSize, kPalmCentre);
+    const Isometry3d to_hand = s.hand.inverse();
     for (int f = 0; f < kFingers; ++f) {
-      const Vector3d knuckle = s.hand * kKnuckle[f];
-      const Vector3d tip = s.fingertip[static_cast<size_t>(f)];
-      const Vector3d along = tip - knuckle;
-      if (along.norm() > 1e-3) add_tube(im.extra, s.hand.inverse() * knuckle, s.hand.inverse() * (tip - along.normalized() * m.tip_radius[static_cast<size_t>(f)] * 0.5), kFingerRadius);
+      const double tip_radius = m.tip_radius[static_cast<size_t>(f)];
+      const Vector3d tip = to_hand * s.fingertip[static_cast<size_t>(f)];
+      if (m.has_reach) {
+        const FingerChain chain = finger_chain(m, f, tip);
+        for (size_t j = 0; j + 1 < chain.point.size(); ++j) {
+          const Vector3d along = chain.point[j + 1] - chain.point[j];
+          const bool last = j + 2 == chain.point.size();  // the tip's sphere ends the last link
+          if (along.norm() > 1e-3) {
+            const Vector3d end = chain.point[j + 1] - along.normalized() * (last ? tip_radius * 0.5 : 0.0);
+            add_tube(im.extra, chain.point[j], end, kFingerRadius);
+          }
+        }
+        continue;
+      }
+      const Vector3d along = tip - kKnuckle[f];
+      if (along.norm() > 1e-3) add_tube(im.extra, kKnuckle[f], tip - along.normalized() * tip_radius * 0.5, kFingerRadius);
     }
     set_colour(kHand);
     push_pose(s.hand);
