@@ -1,8 +1,9 @@
 // afford describe FILE: what the model derives from an object file (lever
 // pattern, mechanical advantage along the arm, interaction space, which
-// actees fit, spring force at each limit), or from a session file (where
-// the jaws touch its actee as placed, what each grip of its script
-// squeezes); `--effects` lists the optional torque terms. The actees are the shipped ones (data_dir.h) unless
+// actees fit, spring force at each limit), from a session file (where the
+// jaws touch its actee as placed, what each grip of its script squeezes),
+// or from an agent file (each finger's ranges and reach); `--effects`
+// lists the optional torque terms. The actees are the shipped ones (data_dir.h) unless
 // --actees names a folder.
 #include <algorithm>
 #include <cstdio>
@@ -197,6 +198,29 @@ void describe_session(const CompiledSession& s) {
   }
 }
 
+// The hand: its impedance and force, and each finger's joint ranges (Fig.
+// 8) and how far its tip reaches from the wrist (reach.h).
+void describe_agent(const AgentSpec& a) {
+  const Model m = compile_agent_only(a);
+  std::cout << "agent " << a.name << ": " << a.description << "\n";
+  std::cout << "force_gain " << q(m.force_gain, dim::stiffness) << ", at most " << q(m.max_force, dim::force);
+  if (m.hand_damping > 0) std::cout << ", damping " << q(m.hand_damping, dim::damping);
+  std::cout << "\n";
+  for (size_t f = 0; f < kFingers; ++f) {
+    std::cout << "  " << kFingerNames[f] << ": tip radius " << q(m.tip_radius[f], dim::length);
+    for (size_t j = 0; j < kJoints; ++j) {
+      std::cout << ", " << kJointNames[j] << " " << q(m.joint_min[f][j], dim::angle) << " to "
+                << q(m.joint_max[f][j], dim::angle);
+    }
+    if (m.has_reach) {
+      std::cout << "; the tip reaches " << q(m.reach_min[f], dim::length) << " to " << q(m.reach_max[f], dim::length)
+                << " from the wrist";
+    }
+    std::cout << "\n";
+  }
+  if (!m.has_reach) std::cout << "no reach: the file gives no chains, so the fingertips go wherever they are put\n";
+}
+
 struct DescribeOptions {
   std::string file, actee_dir;
   bool effects = false;
@@ -217,8 +241,12 @@ int describe(const DescribeOptions& o) {
     describe_session(load_session(file));
     return 0;
   }
+  if (kind == "agent") {
+    describe_agent(read_agent(root));
+    return 0;
+  }
   if (kind != "object") {
-    return usage_error("describe reads object and session files; " + file + " is a " + kind + " file");
+    return usage_error("describe reads object, session and agent files; " + file + " is a " + kind + " file");
   }
   if (actees_given && !std::filesystem::is_directory(actee_dir)) {
     // Asked for by name: an empty list would hide the typo.
@@ -236,10 +264,11 @@ int describe(const DescribeOptions& o) {
 void add_describe(CLI::App& app, Run* run) {
   CLI::App* cmd = app.add_subcommand(
       "describe",
-      "what the model derives from an object file (lever, advantage, interaction space, fits) or a session (its grips)");
+      "what the model derives from an object file (lever, advantage, interaction space, fits), a session (its "
+      "grips) or an agent (its reach)");
   auto o = std::make_shared<DescribeOptions>();
   CLI::Option* file =
-      cmd->add_option("FILE", o->file, "an object file (objects/*.yaml) or a session file (sessions/*.yaml)")
+      cmd->add_option("FILE", o->file, "an object (objects/*.yaml), session (sessions/*.yaml) or agent (agents/*.yaml) file")
           ->type_name(kFile);
   cmd->add_option("--actees", o->actee_dir, "the folder of actees to fit (default: the shipped actees)")
       ->type_name(kDir);
