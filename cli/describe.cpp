@@ -117,7 +117,7 @@ void describe_object(const ObjectSpec& o, const std::string& actee_dir) {
 double effort_cap(const Model& m, const Keyframe& k, std::string* grasp) {
   const int type = m.grasp_name.empty() ? -1 : classify_grasp(m, k.joint);
   *grasp = type >= 0 ? m.grasp_name[static_cast<size_t>(type)] : "no grasp type";
-  return type >= 0 ? std::min(m.max_force, m.grasp_max_force[static_cast<size_t>(type)]) : m.max_force;
+  return grasp_force_cap(m, type);
 }
 
 // A session as placed: where the jaws touch its actee, and what each grip

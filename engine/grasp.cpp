@@ -3,6 +3,7 @@
 // so a grasp starts one frame after the fingers touch.
 #include <algorithm>
 
+#include "grasps.h"
 #include "stages.h"
 
 namespace afford {
@@ -36,10 +37,7 @@ void update_grasp(const Model& m, State& s) {
   // ("If the present grasp type is included in the grasp types shown in
   // Fig. 7, the agent is considered grasping the acting object").
   const bool posture_grasps = m.grasp_name.empty() || s.grasp_type >= 0;
-  s.max_force = m.max_force;
-  if (s.grasp_type >= 0) {
-    s.max_force = std::min(s.max_force, m.grasp_max_force[static_cast<size_t>(s.grasp_type)]);
-  }
+  s.max_force = grasp_force_cap(m, s.grasp_type);
 
   bool finger_on_fixed = false;
   for (size_t f = 1; f < kFingers; ++f) finger_on_fixed = finger_on_fixed || (s.finger_on_arm[f] & 1);

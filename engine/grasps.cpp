@@ -2,6 +2,7 @@
 // the per-frame classification of a posture.
 #include "grasps.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -143,6 +144,10 @@ void compile_grasps(const std::vector<GraspTypeSpec>& grasps, Model& m) {
       }
     }
   }
+}
+
+double grasp_force_cap(const Model& m, int type) {
+  return type >= 0 ? std::min(m.max_force, m.grasp_max_force[static_cast<size_t>(type)]) : m.max_force;
 }
 
 int classify_grasp(const Model& m, const std::array<std::array<double, kJoints>, kFingers>& joints) {

@@ -52,4 +52,8 @@ void compile_grasps(const std::vector<GraspTypeSpec>& grasps, Model& m);
 // model has no taxonomy. Allocates nothing.
 int classify_grasp(const Model& m, const std::array<std::array<double, kJoints>, kFingers>& joints);
 
+// The largest effort force (N) a hand in grasp type `type` (-1: none) can
+// push with: the agent's max_force, capped by the type's.
+double grasp_force_cap(const Model& m, int type);
+
 }  // namespace afford

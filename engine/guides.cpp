@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <numbers>
 
 #include "lever.h"
 #include "load.h"
@@ -311,7 +312,7 @@ void stable_turn(const Model& m, const Vector3d& normal, const Vector3d& gravity
   auto across = [&](double phi) { return (pose * Eigen::AngleAxisd(phi, Vector3d::UnitX()) * normal).dot(gravity); };
   constexpr int kSteps = 360;  // one degree apart, then halved down to the root
   for (int i = 0; i < kSteps && !f.stable_turn_found; ++i) {
-    double lo = 2 * M_PI * i / kSteps, hi = 2 * M_PI * (i + 1) / kSteps;
+    double lo = 2 * std::numbers::pi * i / kSteps, hi = 2 * std::numbers::pi * (i + 1) / kSteps;
     if ((across(lo) > 0) == (across(hi) > 0) && across(lo) != 0) continue;
     for (int k = 0; k < 60; ++k) ((across(lo) > 0) == (across(0.5 * (lo + hi)) > 0) ? lo : hi) = 0.5 * (lo + hi);
     const Eigen::Matrix3d turned = pose * Eigen::AngleAxisd(lo, Vector3d::UnitX()).toRotationMatrix();
@@ -329,7 +330,7 @@ void stable_turn(const Model& m, const Vector3d& normal, const Vector3d& gravity
     return c * std::cos(m.theta_rest) + s * std::sin(m.theta_rest);
   };
   f.weight_above = weight(f.stable_turn);
-  f.weight_below = weight(f.stable_turn + M_PI);
+  f.weight_below = weight(f.stable_turn + std::numbers::pi);
   f.spring_at_rest = spring_torques(m, m.theta_rest).preload;
   f.friction_at_rest = m.friction_torque;
 }

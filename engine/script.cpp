@@ -322,13 +322,10 @@ JointAngles named_posture(const Model& m, const KeyframeSpec& k) {
 // A squeeze given as a force, as the thumb's advance that reaches it
 // (squeeze.h), within the hand's largest effort and its grasp's.
 double squeeze_until(const Model& m, const GripSpec& grip, const JointAngles& joint, const ForcedLever& lever) {
-  double cap = m.max_force;
-  std::string whose = "the agent's";
   const int type = m.grasp_name.empty() ? -1 : classify_grasp(m, joint);
-  if (type >= 0 && m.grasp_max_force[static_cast<size_t>(type)] < cap) {
-    cap = m.grasp_max_force[static_cast<size_t>(type)];
-    whose = "the grasp " + m.grasp_name[static_cast<size_t>(type)] + "'s";
-  }
+  const double cap = grasp_force_cap(m, type);
+  const std::string whose =
+      cap < m.max_force ? "the grasp " + m.grasp_name[static_cast<size_t>(type)] + "'s" : std::string("the agent's");
   double effort = grip.until;
   if (grip.squeeze_by == SqueezeBy::effort && effort > cap) {
     fail(grip.squeeze_loc, "an effort within " + whose + " largest, " + format_quantity(cap, dim::force),
@@ -435,6 +432,9 @@ Script compile_script(const ScriptSpec& spec, const Model& first, std::span<cons
   std::optional<ForcedLever> lever;  // the lever at the start, once a squeeze is given as a force
   for (const KeyframeSpec& k : spec.keyframes) {
     if (k.actee_index >= 0) {
+      if (static_cast<size_t>(k.actee_index) >= actee_models.size()) {
+        throw LogicError("compile_script(): a keyframe's actee has no model");
+      }
       in_play = &actee_models[static_cast<size_t>(k.actee_index)];
       lever.reset();  // a squeeze by force is the new actee's
     }
