@@ -57,6 +57,11 @@ constexpr double kWeightRadius = 1e-3;
 // masses. The actees are smooth (tools.cpp): each jaw geom's pair makes
 // one contact, so no solref is shared among a face's corners.
 constexpr double kInvWeight = 1e6;  // 1/kg
+// Gives `body` (the arm, or the plate) that inverse weight, translation and rotation.
+void press_with_one_weight(mjModel* m, int body) {
+  m->body_invweight0[2 * body] = kInvWeight;
+  m->body_invweight0[2 * body + 1] = kInvWeight;
+}
 // The contact's damping: a tenth of critical for the arm at its lightest.
 constexpr double kContactDampingRatio = 0.1;
 constexpr double kFar = 10;  // m, where a broken actee goes (out of reach of every geom)
@@ -277,8 +282,7 @@ std::vector<Measured> MujocoReality::play(const Case& c, const Drive& drive, uns
   mjModel* m = sim.m;
   mjData* d = sim.d;
   const int arm_body = mj_name2id(m, mjOBJ_BODY, "arm");
-  m->body_invweight0[2 * arm_body] = kInvWeight;
-  m->body_invweight0[2 * arm_body + 1] = kInvWeight;
+  press_with_one_weight(m, arm_body);
   const int actee_geom = with_actee ? mj_name2id(m, mjOBJ_GEOM, "actee") : -1;
   const int hinge = m->jnt_qposadr[mj_name2id(m, mjOBJ_JOINT, "hinge")];
   const int hand = m->jnt_qposadr[mj_name2id(m, mjOBJ_JOINT, "hand")];
@@ -389,8 +393,7 @@ PlatesLaw MujocoReality::plates(const Case& c) const {
   mjModel* m = sim.m;
   mjData* d = sim.d;
   const int plate = mj_name2id(m, mjOBJ_BODY, "plate");
-  m->body_invweight0[2 * plate] = kInvWeight;
-  m->body_invweight0[2 * plate + 1] = kInvWeight;
+  press_with_one_weight(m, plate);
   const int actee_geom = mj_name2id(m, mjOBJ_GEOM, "actee");
   // Slowly: to the limit's deflection in 2 s, read at 1 kHz up to the
   // limit, the crosshead's travel since it touched and the load cell.
