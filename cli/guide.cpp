@@ -81,10 +81,17 @@ void print_runs(const Guides& g, int index) {
 }
 
 // The stable orientation's torques at rest, and what they mean for the
-// tool left alone that way up.
+// tool left alone that way up; where the functional pose is not that
+// orientation, why the file may have laid it otherwise.
 void print_stable_turn(const GuideFacts& f) {
   const double hold = f.spring_at_rest + f.friction_at_rest;  // N*m, what keeps the arm open against a closing weight
-  std::cout << "  turned " << q(f.stable_turn, dim::angle) << " about its length, the plane parallel to gravity:\n";
+  const bool parallel = f.plane_to_gravity == 0;
+  if (parallel) {
+    std::cout << "  as it stands (the moving arm " << (f.stable_turn == 0 ? "above" : "below")
+              << ") and turned over:\n";
+  } else {
+    std::cout << "  turned " << q(f.stable_turn, dim::angle) << " about its length, the plane parallel to gravity:\n";
+  }
   auto way = [&](const char* where, double weight) {
     std::cout << "    the moving arm " << where << ": its weight " << q(std::abs(weight), dim::torque)
               << (weight < 0 ? " closing" : " opening") << " at rest";
@@ -100,6 +107,18 @@ void print_stable_turn(const GuideFacts& f) {
   };
   way("above", f.weight_above);
   way("below", f.weight_below);
+  if (parallel) return;
+  // Why the file's pose may not be the stable one: a weight that outdoes
+  // the spring sets the arm's rest on edge, whichever way up.
+  const double weight = std::max(std::abs(f.weight_above), std::abs(f.weight_below));
+  if (weight > hold) {
+    std::cout << "  why not on edge: the arm's weight is " << plain(weight / f.spring_at_rest)
+              << " times the spring's torque at rest; on edge the weight, not the spring, sets where the arm rests "
+                 "(shut with the moving arm above, hanging open below), so the functional pose lays the plane level, "
+                 "where only the spring acts\n";
+  } else {
+    std::cout << "  the spring holds the arm open either way up: the functional pose could stand the tool on edge\n";
+  }
 }
 
 void print_text(const Guides& g, const std::string& guides_file, const std::string& actee_dir) {

@@ -310,6 +310,13 @@ std::string fixed2(double v) {
 void stable_turn(const Model& m, const Vector3d& normal, const Vector3d& gravity, GuideFacts& f) {
   const Eigen::Matrix3d pose = m.object_start.linear();
   auto across = [&](double phi) { return (pose * Eigen::AngleAxisd(phi, Vector3d::UnitX()) * normal).dot(gravity); };
+  // Already parallel (to the rounding a turn written in degrees leaves):
+  // no turn, with the moving arm above or half a turn on.
+  constexpr double kParallel = 1e-9;  // rad
+  if (std::abs(across(0)) < kParallel) {
+    f.stable_turn_found = true;
+    f.stable_turn = (pose * Vector3d::UnitY()).dot(gravity) > 0 ? std::numbers::pi : 0.0;
+  }
   constexpr int kSteps = 360;  // one degree apart, then halved down to the root
   for (int i = 0; i < kSteps && !f.stable_turn_found; ++i) {
     double lo = 2 * std::numbers::pi * i / kSteps, hi = 2 * std::numbers::pi * (i + 1) / kSteps;
@@ -377,6 +384,7 @@ void add_symmetry_plane(const Model& m, int index, const GuideSpec& g, Guides& o
   f.functional_pose = m.object_start;
   const Vector3d n_world = m.object_start.linear() * r.normal;
   f.plane_to_gravity = std::asin(std::min(1.0, std::abs(n_world.dot(g.gravity.normalized()))));
+  if (f.plane_to_gravity < 1e-9) f.plane_to_gravity = 0;  // the rounding of a turn written in degrees
   stable_turn(m, r.normal, g.gravity.normalized(), f);
   out.labels.push_back({index, Arm::fixed, "plane of symmetry", r.centre + r.u * r.half_u + r.v * r.half_v, s.colour});
   out.labels.push_back({index, Arm::fixed, "gravity", s.b, s.colour});

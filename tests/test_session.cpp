@@ -18,6 +18,7 @@
 #include "run.h"
 #include "scripted_agent.h"
 #include "session.h"
+#include "terms.h"
 #include "test_sessions.h"
 #include "trace.h"
 
@@ -315,6 +316,36 @@ TEST(Grip, SqueezeClosesTheFreeLeverByItsArc) {
 }
 
 // ------------------------------------------------------------ session errors
+
+TEST(Run, TheTongsCarryTheirArmsWeightOnEdge) {
+  // objects/tongs.yaml stands on edge, the moving arm above. Worked by hand:
+  // the parts share the 140 g by volume; the moving arm is half of it,
+  // 70 g, its strip (185 x 8 x 22 mm = 32,560 mm^3 at (92.5, 4) mm) and
+  // head (55 x 6 x 40 mm = 13,200 mm^3 at (212.5, 3) mm) centred at
+  // (127.12, 3.711) mm of its frame. At rest (18 deg) that is
+  // 127.12 cos 18 - 3.711 sin 18 = 119.75 mm out from the pivot, level:
+  // its weight closes the arm by 0.07 * 9.80665 * 0.11975 = 0.08220 N*m.
+  const CompiledSession s = load_session(AFFORD_SOURCE_DIR "/sessions/paper-tongs.yaml");
+  ASSERT_TRUE(s.model.gravity);
+  const double x = (32560 * 92.5 + 13200 * 212.5) / 45760e3, y = (32560 * 4.0 + 13200 * 3.0) / 45760e3;  // m
+  auto weight = [&](double theta) { return -0.07 * 9.80665 * (x * std::cos(theta) - y * std::sin(theta)); };
+  const auto start = state_at(s, 0.1);  // the fingers closing, the arm at rest
+  EXPECT_NEAR(start->theta, 18 * std::numbers::pi / 180, 1e-12);
+  EXPECT_NEAR(start->torque[kGravity], -0.08220, 5e-6);
+  EXPECT_NEAR(start->torque[kGravity], weight(start->theta), 1e-12);
+  // Lifted and carried (2 to 4 s), the hand neither tips nor turns the
+  // tool: the weight still acts, at the arm's angle of the moment.
+  const auto carried = state_at(s, 3.0);
+  EXPECT_GT(carried->object_pose.translation().z(), start->object_pose.translation().z() + 0.03);
+  EXPECT_NEAR(carried->torque[kGravity], weight(carried->theta), 1e-12);
+  // The nutcracker lies flat (its guide says why): even with its weight
+  // switched on, none of it turns the arm about the vertical pivot.
+  Model flat = load_session(AFFORD_SOURCE_DIR "/sessions/paper-nutcracker.yaml").model;
+  flat.gravity = true;
+  double c = 1, sn = 1;
+  gravity_coefficients(flat, flat.object_start.linear(), &c, &sn);
+  EXPECT_NEAR(std::hypot(c, sn), 0, 1e-15);
+}
 
 TEST(SessionErrors, UnknownKeySaysDidYouMean) {
   const std::string e = session_error(with_line(8, "scirpt:"));
