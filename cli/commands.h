@@ -24,10 +24,12 @@ void add_guide(CLI::App& app, Run* run);
 void add_rules(CLI::App& app, Run* run);
 void add_run(CLI::App& app, Run* run);
 void add_live(CLI::App& app, Run* run);
+void add_serve(CLI::App& app, Run* run);
 void add_replay(CLI::App& app, Run* run);
 void add_schema(CLI::App& app, Run* run);
 void add_test(CLI::App& app, Run* run);
 void add_export(CLI::App& app, Run* run);
+void add_model(CLI::App& app, Run* run);
 void add_completion(CLI::App& app, Run* run);
 
 // Prints "afford: <message>" to stderr and returns the exit status 2.

@@ -45,12 +45,6 @@ HullFace make_face(const std::vector<Vector3d>& p, int a, int b, int c) {
   return HullFace{{a, b, c}, n, n.dot(p[a])};
 }
 
-struct Hull {
-  std::vector<Vector3d> vertices;
-  std::vector<int> faces;  // FCL's encoding: 3, i0, i1, i2, 3, ...
-  int num_faces = 0;
-};
-
 // Incremental hull, O(n^2): the shapes are written by hand (a few hundred
 // points at most) and compiled once, so plain beats clever here. Returns
 // triangles; a point on a face or an edge of the final hull may remain a
@@ -124,7 +118,9 @@ std::vector<HullFace> hull_triangles(const std::vector<Vector3d>& p, const Sourc
   return faces;
 }
 
-Hull convex_hull(const std::vector<Vector3d>& input, const SourceLoc& loc) {
+}  // namespace
+
+ConvexHull convex_hull(const std::vector<Vector3d>& input, const SourceLoc& loc) {
   std::vector<Vector3d> p = input;
   std::vector<HullFace> faces = hull_triangles(p, loc);
 
@@ -151,7 +147,7 @@ Hull convex_hull(const std::vector<Vector3d>& input, const SourceLoc& loc) {
   }
 
   // Keep only the vertices the faces use, renumbered in input order.
-  Hull hull;
+  ConvexHull hull;
   std::vector<int> index(p.size(), -1);
   for (const HullFace& f : faces)
     for (int v : f.v) index[v] = 0;
@@ -160,12 +156,11 @@ Hull convex_hull(const std::vector<Vector3d>& input, const SourceLoc& loc) {
     index[i] = static_cast<int>(hull.vertices.size());
     hull.vertices.push_back(p[i]);
   }
-  for (const HullFace& f : faces) {
-    hull.faces.insert(hull.faces.end(), {3, index[f.v[0]], index[f.v[1]], index[f.v[2]]});
-  }
-  hull.num_faces = static_cast<int>(faces.size());
+  for (const HullFace& f : faces) hull.triangles.push_back({index[f.v[0]], index[f.v[1]], index[f.v[2]]});
   return hull;
 }
+
+namespace {
 
 void check_size(const SourceLoc& loc, const char* what, double value) {
   if (!std::isfinite(value) || value < 0)
@@ -225,13 +220,15 @@ Geometry Geometry::compile(const ShapeSpec& spec) {
       break;
     }
     case ShapeKind::convex: {
-      Hull hull = convex_hull(spec.vertices, loc);
+      ConvexHull hull = convex_hull(spec.vertices, loc);
       g.hull_vertices_ = hull.vertices;
+      std::vector<int> fcl_faces;  // FCL's encoding: 3, i0, i1, i2, 3, ...
+      for (const auto& t : hull.triangles) fcl_faces.insert(fcl_faces.end(), {3, t[0], t[1], t[2]});
       g.local_box_.setEmpty();
       for (const Vector3d& v : hull.vertices) g.local_box_.extend(v);
       g.fcl_ = std::make_shared<fcl::Convexd>(
-          std::make_shared<const std::vector<Vector3d>>(std::move(hull.vertices)), hull.num_faces,
-          std::make_shared<const std::vector<int>>(std::move(hull.faces)));
+          std::make_shared<const std::vector<Vector3d>>(std::move(hull.vertices)), static_cast<int>(hull.triangles.size()),
+          std::make_shared<const std::vector<int>>(std::move(fcl_faces)));
       break;
     }
   }

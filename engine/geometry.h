@@ -4,7 +4,9 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <array>
 #include <memory>
+#include <vector>
 
 #include "spec.h"
 
@@ -45,6 +47,17 @@ class Geometry {
   Eigen::AlignedBox3d local_box_;
   std::vector<Eigen::Vector3d> hull_vertices_;  // convex: the hull's vertices only
 };
+
+// The convex hull of points: its corners and its triangles, counter-
+// clockwise seen from outside. Incremental, O(n^2): for the few hundred
+// points of a shape written by hand (a `convex` part) or a mesh's extreme
+// points. DataError at loc for fewer than four points, a non-finite one, or
+// points that span no volume.
+struct ConvexHull {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::array<int, 3>> triangles;
+};
+ConvexHull convex_hull(const std::vector<Eigen::Vector3d>& points, const SourceLoc& loc);
 
 // One contact between two placed shapes: where, which way, how deep.
 struct ContactPoint {

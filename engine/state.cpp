@@ -125,6 +125,7 @@ std::uint64_t state_hash(const State& s) {
   h.pose(s.object_pose);
   h.pose(s.actee_pose);
   for (const auto& f : s.fingertip) h.vec(f);
+  for (double x : s.reach_short) h.value(x);
   h.contacts(s.agent_object);
   h.value(s.finger_on_arm);
   h.value(s.grasped);

@@ -10,6 +10,7 @@ packages=(
   libglm-dev libosmesa6-dev zlib1g-dev libdeflate-dev libusb-1.0-0-dev umockdev libumockdev-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libode-dev
   libcli11-dev help2man
+  libcivetweb-dev libjs-three libassimp-dev liburdfdom-dev
   nlohmann-json3-dev python3-jsonschema python3-yaml parallel
   clang-14 libclang-rt-14-dev
 )

@@ -1,0 +1,194 @@
+#include "urdf_tool.h"
+
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <map>
+
+#include "errors.h"
+#include "files.h"
+#include "mesh_file.h"
+#include "primitive_meshes.h"
+
+namespace afford::modelling {
+namespace {
+
+namespace fs = std::filesystem;
+using Eigen::Isometry3d;
+using Eigen::Vector3d;
+
+constexpr size_t kMaxUrdfBytes = 16u << 20;  // a description, not its meshes
+
+[[noreturn]] void urdf_error(const std::string& file, const std::string& expected, const std::string& found) {
+  fail(SourceLoc{file, 0, 0}, expected, found);
+}
+
+// urdfdom says why it could not read a file through console_bridge: the
+// last error it logged becomes the found part of our error.
+class LastError : public console_bridge::OutputHandler {
+ public:
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) last = text;
+  }
+  std::string last;
+};
+
+Isometry3d pose_of(const urdf::Pose& p) {
+  Isometry3d t = Isometry3d::Identity();
+  t.translation() = Vector3d(p.position.x, p.position.y, p.position.z);
+  t.linear() = Eigen::Quaterniond(p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z).normalized().toRotationMatrix();
+  return t;
+}
+
+// A mesh's file: "package://pkg/path" and plain paths are taken beside
+// the URDF (and for package:// also one folder up, the package's root).
+std::string mesh_path(const std::string& urdf, const std::string& name) {
+  const fs::path here = fs::path(urdf).parent_path();
+  std::string rest = name;
+  if (rest.rfind("file://", 0) == 0) return rest.substr(7);
+  if (rest.rfind("package://", 0) == 0) {
+    rest = rest.substr(10);
+    const size_t slash = rest.find('/');
+    const std::string inside = slash == std::string::npos ? rest : rest.substr(slash + 1);
+    if (fs::exists(here / inside)) return (here / inside).string();
+    return (here.parent_path() / rest).string();
+  }
+  return fs::path(name).is_absolute() ? name : (here / name).string();
+}
+
+TriangleMesh geometry_mesh(const std::string& urdf, const std::string& link, const urdf::Geometry& g) {
+  switch (g.type) {
+    case urdf::Geometry::BOX: {
+      const auto& b = static_cast<const urdf::Box&>(g);
+      return box_mesh(Vector3d(b.dim.x, b.dim.y, b.dim.z));
+    }
+    case urdf::Geometry::SPHERE:
+      return sphere_mesh(static_cast<const urdf::Sphere&>(g).radius);
+    case urdf::Geometry::CYLINDER: {
+      const auto& c = static_cast<const urdf::Cylinder&>(g);
+      return cylinder_mesh(c.radius, c.length);
+    }
+    case urdf::Geometry::MESH: {
+      const auto& m = static_cast<const urdf::Mesh&>(g);
+      const std::string path = mesh_path(urdf, m.filename);
+      TriangleMesh mesh;
+      try {
+        mesh = read_mesh(path, format_says_unit(path) ? std::nullopt : std::optional<double>(1.0));
+      } catch (const DataError& e) {
+        urdf_error(urdf, "link '" + link + "' to name a mesh afford can read", e.what());
+      }
+      const Vector3d scale(m.scale.x, m.scale.y, m.scale.z);
+      for (Vector3d& v : mesh.vertices) v = v.cwiseProduct(scale);
+      if (scale.prod() < 0) {  // a mirroring scale turns the triangles inside out
+        for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+      }
+      return mesh;
+    }
+  }
+  urdf_error(urdf, "a box, sphere, cylinder or mesh in link '" + link + "'", "another geometry");
+}
+
+// The link's collision geometry (its visual where it has none), in the
+// frame `pose` puts the link in.
+void add_link(const std::string& urdf, const urdf::Link& link, const Isometry3d& pose, TriangleMesh& out) {
+  bool any = false;
+  for (const auto& c : link.collision_array) {
+    if (!c || !c->geometry) continue;
+    append(out, geometry_mesh(urdf, link.name, *c->geometry), pose * pose_of(c->origin));
+    any = true;
+  }
+  if (!any) {
+    for (const auto& v : link.visual_array) {
+      if (!v || !v->geometry) continue;
+      append(out, geometry_mesh(urdf, link.name, *v->geometry), pose * pose_of(v->origin));
+      any = true;
+    }
+  }
+  if (!any) urdf_error(urdf, "collision or visual geometry in link '" + link.name + "'", "none");
+}
+
+// Each link's frame in the root link's, every joint at zero.
+void place_links(const urdf::Link& link, const Isometry3d& pose, std::map<std::string, Isometry3d>& out) {
+  out[link.name] = pose;
+  for (const auto& child : link.child_links) {
+    const auto& joint = child->parent_joint;
+    place_links(*child, pose * pose_of(joint->parent_to_joint_origin_transform), out);
+  }
+}
+
+}  // namespace
+
+UrdfTool read_urdf_tool(const std::string& path, const std::string& fixed, const std::string& moving) {
+  const std::string xml = read_regular_file(path, kMaxUrdfBytes);  // DataError: missing, a directory, too large
+  LastError errors;
+  console_bridge::useOutputHandler(&errors);
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
+  console_bridge::restorePreviousOutputHandler();
+  if (!model) urdf_error(path, "a URDF urdfdom can read", errors.last.empty() ? "it could not" : shorten(errors.last));
+
+  // The joint: the one revolute (or continuous) joint, or the one between
+  // the named links.
+  urdf::JointConstSharedPtr joint;
+  int hinges = 0;
+  for (const auto& [name, j] : model->joints_) {
+    const bool hinge = j->type == urdf::Joint::REVOLUTE || j->type == urdf::Joint::CONTINUOUS;
+    if (fixed.empty()) {
+      if (!hinge) continue;
+      ++hinges;
+      joint = j;
+    } else if ((j->parent_link_name == fixed && j->child_link_name == moving) ||
+               (j->parent_link_name == moving && j->child_link_name == fixed)) {
+      if (!hinge) urdf_error(path, "a revolute joint between '" + fixed + "' and '" + moving + "'", "joint '" + name + "'");
+      joint = j;
+    }
+  }
+  if (fixed.empty() && hinges != 1) {
+    urdf_error(path, "one revolute (or continuous) joint, or --links FIXED,MOVING",
+               hinges == 0 ? "none" : std::to_string(hinges));
+  }
+  if (!fixed.empty()) {
+    for (const std::string& name : {fixed, moving}) {
+      if (!model->getLink(name)) urdf_error(path, "a link '" + name + "'", "none");
+    }
+    if (!joint) urdf_error(path, "a joint between links '" + fixed + "' and '" + moving + "'", "none");
+  }
+
+  UrdfTool tool;
+  tool.file = path;
+  tool.joint = joint->name;
+  const bool forward = fixed.empty() || joint->parent_link_name == fixed;
+  tool.fixed_link = forward ? joint->parent_link_name : joint->child_link_name;
+  tool.moving_link = forward ? joint->child_link_name : joint->parent_link_name;
+  const Vector3d axis(joint->axis.x, joint->axis.y, joint->axis.z);
+  if (!(axis.norm() > 1e-9) || !axis.allFinite()) {
+    urdf_error(path, "an axis of some length in joint '" + joint->name + "'", "(" + std::to_string(axis.x()) + ", " +
+                                                                             std::to_string(axis.y()) + ", " +
+                                                                             std::to_string(axis.z()) + ")");
+  }
+  tool.limited = joint->type == urdf::Joint::REVOLUTE;
+  if (tool.limited) {
+    if (!joint->limits) urdf_error(path, "limits in revolute joint '" + joint->name + "'", "none");
+    tool.lower = joint->limits->lower;
+    tool.upper = joint->limits->upper;
+    if (!(tool.lower < tool.upper)) {
+      urdf_error(path, "a lower limit below the upper in joint '" + joint->name + "'",
+                 std::to_string(tool.lower) + " and " + std::to_string(tool.upper));
+    }
+  }
+
+  std::map<std::string, Isometry3d> frames;
+  place_links(*model->getRoot(), Isometry3d::Identity(), frames);
+  const Isometry3d to_fixed = frames.at(tool.fixed_link).inverse();
+  const Isometry3d joint_frame = to_fixed * frames.at(joint->parent_link_name) *
+                                 pose_of(joint->parent_to_joint_origin_transform);
+  tool.hinge_point = joint_frame.translation();
+  tool.hinge_axis = (joint_frame.linear() * axis).normalized();
+  tool.fixed.file = tool.moving.file = path;
+  add_link(path, *model->getLink(tool.fixed_link), Isometry3d::Identity(), tool.fixed);
+  add_link(path, *model->getLink(tool.moving_link), to_fixed * frames.at(tool.moving_link), tool.moving);
+  return tool;
+}
+
+}  // namespace afford::modelling

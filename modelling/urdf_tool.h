@@ -1,0 +1,34 @@
+// A two-part tool from a robot description (URDF, as in PartNet-Mobility
+// and SAPIEN): the fixed and the moving link joined by a revolute joint,
+// each link's collision geometry (its visual where it has none) gathered
+// into one mesh in the fixed link's frame with the joint at zero, and the
+// hinge's point, axis and limits in that frame. Read with urdfdom; URDF
+// lengths are metres, and so are the meshes it names (times their scale).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "triangle_mesh.h"
+
+namespace afford::modelling {
+
+struct UrdfTool {
+  std::string file;
+  std::string joint, fixed_link, moving_link;
+  Eigen::Vector3d hinge_point = Eigen::Vector3d::Zero();  // m, fixed link frame
+  Eigen::Vector3d hinge_axis = Eigen::Vector3d::UnitZ();  // unit, fixed link frame
+  bool limited = false;  // a revolute joint (true) or a continuous one
+  double lower = 0, upper = 0;  // rad, when limited
+  TriangleMesh fixed, moving;   // m, fixed link frame, the joint at zero
+};
+
+// `fixed` and `moving` name the links; both empty: the one revolute (or
+// continuous) joint's parent and child. DataError at the file (naming the
+// element) when urdfdom cannot read it, when there is no such joint or
+// more than one and no names, when a named link is missing or the two are
+// not joined by one, when an axis has no length, when a link has no
+// geometry, or when a mesh it names cannot be read.
+UrdfTool read_urdf_tool(const std::string& path, const std::string& fixed = "", const std::string& moving = "");
+
+}  // namespace afford::modelling

@@ -1,0 +1,304 @@
+// afford serve's page: a WebSocket to the server (the messages are in
+// serve/protocol.h), a three.js view of the scene it sends, and the
+// controls that drive the hand when this page is the driver.
+import * as THREE from '/three/build/three.module.js';
+import { OrbitControls } from '/three/examples/jsm/controls/OrbitControls.js';
+
+const $ = (id) => document.getElementById(id);
+const view = $('view');
+
+// ------------------------------------------------------------ the view
+
+const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+renderer.setPixelRatio(window.devicePixelRatio);
+view.appendChild(renderer.domElement);
+const scene3 = new THREE.Scene();
+scene3.background = new THREE.Color(0x20242a);
+const camera = new THREE.PerspectiveCamera(40, 1, 0.005, 20);
+camera.up.set(0, 0, 1);  // the engine's world: z up
+const controls = new OrbitControls(camera, renderer.domElement);
+scene3.add(new THREE.HemisphereLight(0xffffff, 0x444444, 0.9));
+const sun = new THREE.DirectionalLight(0xffffff, 0.7);
+sun.position.set(0.5, -0.3, 1);
+scene3.add(sun);
+const grid = new THREE.GridHelper(1, 20, 0x555555, 0x333333);
+grid.rotation.x = Math.PI / 2;  // in the z = 0 plane
+scene3.add(grid);
+
+function resize() {
+  const w = view.clientWidth, h = view.clientHeight;
+  renderer.setSize(w, h);
+  camera.aspect = w / h;
+  camera.updateProjectionMatrix();
+}
+window.addEventListener('resize', resize);
+resize();
+
+// A group whose pose is set from a column-major 4x4 each state.
+function posed() {
+  const g = new THREE.Group();
+  g.matrixAutoUpdate = false;
+  scene3.add(g);
+  return g;
+}
+const fixedArm = posed(), movingArm = posed(), acteeBody = posed();
+let acteeMaterial = null, acteeColour = new THREE.Color(0xc08040);
+const tips = [];
+let homeTarget = new THREE.Vector3(0.06, 0, 0.1), homeEye = new THREE.Vector3(0.35, -0.45, 0.4);
+
+function meshOf(m, material) {
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.Float32BufferAttribute(m.positions, 3));
+  g.setAttribute('normal', new THREE.Float32BufferAttribute(m.normals, 3));
+  return new THREE.Mesh(g, material);
+}
+
+function clear(group) {
+  while (group.children.length) {
+    const c = group.children.pop();
+    if (c.geometry) c.geometry.dispose();
+  }
+}
+
+function resetView() {
+  camera.position.copy(homeEye);
+  controls.target.copy(homeTarget);
+  controls.update();
+}
+
+let scene = null;  // the last scene message
+function buildScene(s) {
+  scene = s;
+  clear(fixedArm);
+  clear(movingArm);
+  clear(acteeBody);
+  const metal = new THREE.MeshStandardMaterial({ color: 0x9aa4ad, metalness: 0.6, roughness: 0.4 });
+  for (const p of s.parts) {
+    const mesh = meshOf(p, metal);
+    mesh.matrixAutoUpdate = false;
+    mesh.matrix.fromArray(p.in_arm);
+    (p.arm === 'moving' ? movingArm : fixedArm).add(mesh);
+  }
+  if (s.actee) {
+    acteeColour = new THREE.Color(s.actee.colour);
+    acteeMaterial = new THREE.MeshStandardMaterial({ color: acteeColour, roughness: 0.7 });
+    acteeBody.add(meshOf(s.actee, acteeMaterial));
+  }
+  for (const t of tips) scene3.remove(t);
+  tips.length = 0;
+  s.fingertip_radius.forEach((r, i) => {
+    const m = new THREE.Mesh(new THREE.SphereGeometry(r, 20, 14),
+      new THREE.MeshStandardMaterial({ color: i === 0 ? 0xff8c1a : 0xe0b090, roughness: 0.8 }));
+    m.userData.finger = i;
+    scene3.add(m);
+    tips.push(m);
+  });
+  const h = s.hand_start;
+  homeTarget = new THREE.Vector3(h[0] * 0.7, h[1] * 0.5, h[2] * 0.5);
+  homeEye = homeTarget.clone().add(new THREE.Vector3(0.25, -0.45, 0.3));
+  resetView();
+  $('trial').textContent = `session ${s.session}, trial ${s.trial} (participant ${s.participant}), ` +
+    `actee ${s.actee_name || 'none'}; recording ${s.recording}`;
+  $('events').innerHTML = '';
+  $('log').innerHTML = '';
+  const shelf = $('shelf');
+  shelf.innerHTML = '';
+  for (const name of s.shelf) {
+    const b = document.createElement('button');
+    b.textContent = name;
+    b.className = 'driver';
+    b.onclick = () => send({ type: 'actee', name });
+    shelf.appendChild(b);
+  }
+  setRole(role);
+}
+
+let state = null;  // the last state message
+function applyState(st) {
+  state = st;
+  fixedArm.matrix.fromArray(st.object);
+  movingArm.matrix.fromArray(st.moving_arm);
+  acteeBody.matrix.fromArray(st.actee);
+  st.fingertips.forEach((p, i) => { if (tips[i]) tips[i].position.set(p[0], p[1], p[2]); });
+  if (acteeMaterial) acteeMaterial.color.set(st.condition === 'broken' ? 0xffee88 : acteeColour);
+  bar('reaction-bar', st.reaction, st.max_force);
+  bar('actee-bar', st.actee_load, st.actee_limit);
+  $('reaction').textContent = `${st.reaction.toFixed(1)} N of ${st.max_force.toFixed(0)} N`;
+  $('actee-load').textContent = st.actee_limit > 0
+    ? `${st.actee_load.toFixed(1)} N of its limit ${st.actee_limit.toFixed(0)} N (${st.condition})` : 'none';
+  $('readout').textContent = `t ${st.t.toFixed(2)} s, angle ${(st.angle * 180 / Math.PI).toFixed(1)} deg, ` +
+    `squeeze ${(st.squeeze * 1000).toFixed(1)} mm (asked ${(st.squeeze_target * 1000).toFixed(1)} mm), ` +
+    `${st.grasped ? 'grasped' : st.gripping ? 'closing' : 'open'}${st.held ? ', held' : ''}; ` +
+    `late frames ${st.deadline_misses}`;
+  plot(st);
+}
+
+// A strip chart of the last 10 s of session time: the thumb's reaction and
+// the actee's load (against the larger of the hand's force and the limit),
+// and the angle (against the tool's range).
+const history = [];
+function plot(st) {
+  if (history.length && st.t < history[history.length - 1].t) history.length = 0;  // a new trial
+  history.push({ t: st.t, reaction: st.reaction, load: st.actee_load, angle: st.angle });
+  while (history.length && history[0].t < st.t - 10) history.shift();
+  const c = $('timeline'), g = c.getContext('2d');
+  g.clearRect(0, 0, c.width, c.height);
+  const top = Math.max(st.max_force, st.actee_limit, 1);
+  const x = (t) => (t - (st.t - 10)) / 10 * c.width;
+  const line = (colour, y) => {
+    g.strokeStyle = colour;
+    g.beginPath();
+    history.forEach((h, i) => (i ? g.lineTo : g.moveTo).call(g, x(h.t), c.height * (1 - Math.max(0, Math.min(1, y(h))))));
+    g.stroke();
+  };
+  const lo = scene.theta.min, hi = scene.theta.max;
+  line('#999', (h) => (h.angle - lo) / Math.max(1e-9, hi - lo));
+  line('#3a7', (h) => h.reaction / top);
+  line('#c60', (h) => h.load / top);
+}
+
+function bar(id, value, limit) {
+  const el = $(id);
+  const f = limit > 0 ? value / limit : 0;
+  el.firstElementChild.style.width = `${Math.max(0, Math.min(1, f)) * 100}%`;
+  el.classList.toggle('over', f >= 1);
+}
+
+function addEvent(e) {
+  if (e.kind === 'inferred') {
+    const li = document.createElement('li');
+    li.innerHTML = `<span class="fn"></span> at ${e.t.toFixed(3)} s`;
+    li.firstChild.textContent = e.function;
+    for (const n of e.explanation || []) {
+      const d = document.createElement('div');
+      d.className = 'why';
+      d.textContent = `${n.t.toFixed(3)} s  ${n.text}` + (n.detail ? ` (${n.detail})` : '');
+      li.appendChild(d);
+    }
+    $('events').appendChild(li);
+  } else {
+    const d = document.createElement('div');
+    d.textContent = `${e.t.toFixed(3)} s ${e.function}: ${e.kind === 'node_reached' ? 'reached' : 'lost'} ${e.text}`;
+    const log = $('log');
+    log.appendChild(d);
+    while (log.childNodes.length > 50) log.removeChild(log.firstChild);
+    log.scrollTop = log.scrollHeight;
+  }
+}
+
+// ------------------------------------------------------------ the socket
+
+let socket = null, seq = 0, role = 'watcher';
+function send(message) {
+  if (!socket || socket.readyState !== WebSocket.OPEN || role !== 'driver') return;
+  socket.send(JSON.stringify({ ...message, seq: ++seq }));
+}
+
+function setRole(r) {
+  role = r;
+  for (const b of document.querySelectorAll('aside button, button.driver')) {
+    if (b.id !== 'view-reset') b.disabled = r !== 'driver';
+  }
+  $('status').textContent = r === 'driver' ? 'driving' : 'watching (another page drives)';
+}
+
+function connect() {
+  socket = new WebSocket(`ws://${location.host}/ws`);
+  socket.onmessage = (ev) => {
+    let m;
+    try { m = JSON.parse(ev.data); } catch { return; }
+    if (m.type === 'hello' || m.type === 'role') setRole(m.role);
+    else if (m.type === 'scene') buildScene(m);
+    else if (m.type === 'state' && scene) applyState(m);
+    else if (m.type === 'event') addEvent(m);
+    else if (m.type === 'error') $('error').textContent = m.message;
+  };
+  socket.onclose = () => {
+    $('status').textContent = 'disconnected: retrying...';
+    setTimeout(connect, 1000);
+  };
+}
+connect();
+
+// ------------------------------------------------------------ the controls
+
+const squeezeStep = 0.002;  // m per key press
+function squeezeTo(target) {
+  if (!scene || !state) return;
+  const s = Math.max(0, Math.min(scene.limits.max_squeeze, target));
+  send({ type: 'thumb', squeeze: s });
+}
+function moveHand(dx, dy, dz) {
+  if (!scene || !state) return;
+  const h = state.hand;  // column-major: translation at 12, 13, 14
+  const lo = scene.limits.hand_min, hi = scene.limits.hand_max;
+  const p = [h[12] + dx, h[13] + dy, h[14] + dz].map((v, i) => Math.max(lo[i], Math.min(hi[i], v)));
+  send({ type: 'move', position: p });
+}
+
+$('grasp').onclick = () => send({ type: 'grasp' });
+$('release').onclick = () => send({ type: 'release' });
+$('reset').onclick = () => send({ type: 'reset' });
+$('view-reset').onclick = resetView;
+
+window.addEventListener('keydown', (e) => {
+  const k = e.key;
+  const target = state ? state.squeeze_target : 0;
+  if (k === 'ArrowUp') squeezeTo(target + squeezeStep);
+  else if (k === 'ArrowDown') squeezeTo(target - squeezeStep);
+  else if (k === 'g') send({ type: 'grasp' });
+  else if (k === 'r') send({ type: 'release' });
+  else if (k === 'v') resetView();
+  else if (k === 'w') moveHand(0, 0.01, 0);
+  else if (k === 's') moveHand(0, -0.01, 0);
+  else if (k === 'a') moveHand(-0.01, 0, 0);
+  else if (k === 'd') moveHand(0.01, 0, 0);
+  else if (k === 'q') moveHand(0, 0, 0.01);
+  else if (k === 'e') moveHand(0, 0, -0.01);
+  else return;
+  e.preventDefault();
+});
+
+// Dragging the thumb: the pointer's motion projected on the screen image
+// of the thumb's closing direction (the tangent of its arc about the
+// pivot, eq. 1) sets the squeeze.
+const raycaster = new THREE.Raycaster();
+let drag = null;
+function toScreen(p) {
+  const v = p.clone().project(camera);
+  return new THREE.Vector2((v.x + 1) / 2 * view.clientWidth, (1 - v.y) / 2 * view.clientHeight);
+}
+renderer.domElement.addEventListener('pointerdown', (e) => {
+  if (!state || !tips[0] || role !== 'driver') return;
+  const r = renderer.domElement.getBoundingClientRect();
+  const ndc = new THREE.Vector2((e.clientX - r.left) / r.width * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
+  raycaster.setFromCamera(ndc, camera);
+  if (raycaster.intersectObject(tips[0]).length === 0) return;
+  const o = new THREE.Matrix4().fromArray(state.object);
+  const origin = new THREE.Vector3().setFromMatrixPosition(o);
+  const axis = new THREE.Vector3(0, 0, 1).transformDirection(o);
+  const thumb = tips[0].position.clone();
+  const closing = axis.clone().cross(thumb.clone().sub(origin)).negate().normalize();  // -theta
+  const a = toScreen(thumb), b = toScreen(thumb.clone().addScaledVector(closing, 0.01));
+  const dir = b.clone().sub(a);
+  const pixelsPerMetre = dir.length() / 0.01;
+  if (pixelsPerMetre < 1) return;
+  drag = { x: e.clientX, y: e.clientY, dir: dir.normalize(), pixelsPerMetre, start: state.squeeze_target };
+  controls.enabled = false;
+  renderer.domElement.setPointerCapture(e.pointerId);
+});
+renderer.domElement.addEventListener('pointermove', (e) => {
+  if (!drag) return;
+  const along = (e.clientX - drag.x) * drag.dir.x + (e.clientY - drag.y) * drag.dir.y;
+  squeezeTo(drag.start + along / drag.pixelsPerMetre);
+});
+const endDrag = () => { drag = null; controls.enabled = true; };
+renderer.domElement.addEventListener('pointerup', endDrag);
+renderer.domElement.addEventListener('pointercancel', endDrag);
+
+function frame() {
+  controls.update();
+  renderer.render(scene3, camera);
+  requestAnimationFrame(frame);
+}
+requestAnimationFrame(frame);
