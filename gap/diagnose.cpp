@@ -55,6 +55,7 @@ Replay slice(const Replay& r, size_t from, size_t to) {
   }
   h.phase = cut(r.phase);
   h.fitted = cut(r.fitted);
+  h.held = cut(r.held);
   return h;
 }
 
@@ -235,17 +236,27 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // blocks are judged by a fit on the others; the parameters reported come
   // from a fit on every trace.
   std::vector<Replay> whole = m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m);
+  auto asked = [&](EffectKind k) {
+    return options.library.empty() || std::find(options.library.begin(), options.library.end(), k) != options.library.end();
+  };
+  std::vector<size_t> every(whole.size());
+  for (size_t i = 0; i < every.size(); ++i) every[i] = i;
+  // Squeezed samples all but still are fitted where the file's friction
+  // is small against the actee's noise; the friction the data shows (a
+  // fit of friction alone) may not be, and then they are left out for
+  // every set alike. Only where friction is in the library: withheld, it
+  // takes nothing out.
+  if (m.rig == Rig::lever && asked(EffectKind::pivot_friction)) {
+    const SetFit alone = Fitter(model, whole, every, {}).fit({EffectKind::pivot_friction});
+    if (!alone.effects.empty()) release_held(whole, alone.effects.front().value[0]);
+  }
   // Where a sensor may read late, its readings after a stretch the model
   // cannot predict are left out for every set alike: the delay from a fit
   // of the latency alone on the whole traces decides how long after.
-  const bool latency_asked = m.rig == Rig::lever &&
-                             (options.library.empty() || std::find(options.library.begin(), options.library.end(),
-                                                                   EffectKind::sensor_latency) != options.library.end());
+  const bool latency_asked = m.rig == Rig::lever && asked(EffectKind::sensor_latency);
   // The readings left in bias that fit toward no delay, so it is fitted
   // again on what the delay found leaves, until the delay holds.
   if (latency_asked) {
-    std::vector<size_t> every(whole.size());
-    for (size_t i = 0; i < every.size(); ++i) every[i] = i;
     const std::vector<Replay> as_replayed = whole;
     double delay = 0;
     for (int round = 0; round < kLateRounds; ++round) {
@@ -422,15 +433,32 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   };
   std::snprintf(line, sizeof line, " (noise %.3g N)", d.noise);
   d.steps.push_back(step_line("nominal:", nominal_scored) + line);
+  // The sets as good as the best so far: where the data cannot tell two
+  // candidates apart at one step, the next step decides between them
+  // (friction or damping alone, then only friction with a progressive
+  // spring), so each is carried on and extended.
+  std::vector<std::vector<EffectKind>> branches = {{}};
+  auto same_set = [](std::vector<EffectKind> a, std::vector<EffectKind> b) {
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    return a == b;
+  };
   if (!nominal_matched) {
     for (int step = 0; step < kMaxEffects; ++step) {
-      std::vector<std::pair<Scored, EffectKind>> tried;
-      for (EffectKind k : library) {
-        if (std::find(chosen.begin(), chosen.end(), k) != chosen.end()) continue;
-        std::vector<EffectKind> set = chosen;
-        set.push_back(k);
-        Scored f = score(set);
-        if (f.fit.valid) tried.emplace_back(std::move(f), k);
+      struct Tried {
+        Scored scored;
+        std::vector<EffectKind> set;  // a branch and the effect added to it, last
+      };
+      std::vector<Tried> tried;
+      for (const std::vector<EffectKind>& branch : branches) {
+        for (EffectKind k : library) {
+          if (std::find(branch.begin(), branch.end(), k) != branch.end()) continue;
+          std::vector<EffectKind> set = branch;
+          set.push_back(k);
+          if (std::any_of(tried.begin(), tried.end(), [&](const Tried& t) { return same_set(t.set, set); })) continue;
+          Scored f = score(set);
+          if (f.fit.valid) tried.push_back({std::move(f), set});
+        }
       }
       if (tried.empty()) break;
       // Each candidate is judged where it acts: an effect of the actee
@@ -438,18 +466,25 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // cuts the held-out RMSE there by the largest share.
       auto in_contact = [&](EffectKind k) { return contact_samples > 0 && manifest_of(k).home == EffectHome::actee; };
       auto rmse_in = [](const Scored& f, bool contact) { return contact ? f.rmse_contact : f.fit.rmse_test; };
-      auto share_cut = [&](const std::pair<Scored, EffectKind>& t) {
-        const bool contact = in_contact(t.second);
+      auto share_cut = [&](const Tried& t) {
+        const bool contact = in_contact(t.set.back());
         const double was = rmse_in(current_scored, contact);
-        return was > 0 ? 1 - rmse_in(t.first, contact) / was : 0.0;
+        return was > 0 ? 1 - rmse_in(t.scored, contact) / was : 0.0;
       };
-      std::stable_sort(tried.begin(), tried.end(), [&](const auto& a, const auto& b) { return share_cut(a) > share_cut(b); });
-      const SetFit& best = tried.front().first.fit;
-      const bool contact = in_contact(tried.front().second);
-      if (share_cut(tried.front()) < kRealMargin || best.aicc > current.aicc - kAiccMargin) {
-        d.steps.push_back(step_line(std::string("no further effect: the best, ") +
-                                        manifest_of(tried.front().second).name + ", would give",
-                                    tried.front().first));
+      std::stable_sort(tried.begin(), tried.end(), [&](const Tried& a, const Tried& b) { return share_cut(a) > share_cut(b); });
+      // Only a candidate that earns its place where it acts competes: one
+      // that cuts a share where it is judged (the contact) but not the
+      // training AICc must not stop another that earns both.
+      auto earns = [&](const Tried& t) {
+        return share_cut(t) >= kRealMargin && t.scored.fit.aicc <= current.aicc - kAiccMargin;
+      };
+      std::stable_partition(tried.begin(), tried.end(), earns);
+      const Tried& best = tried.front();
+      const bool contact = in_contact(best.set.back());
+      if (!earns(best)) {
+        d.steps.push_back(step_line(std::string("no further effect: the best, ") + manifest_of(best.set.back()).name +
+                                        ", would give",
+                                    best.scored));
         break;
       }
       // As good: a runner-up that cuts the held-out error nearly as far as
@@ -467,28 +502,31 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       };
       const double was = rmse_in(current_scored, contact);
       auto cut_of = [&](const Scored& f) { return was * was - rmse_in(f, contact) * rmse_in(f, contact); };  // N^2
-      const double cut = cut_of(tried.front().first);
-      const std::vector<double> best_sq = where(tried.front().first.sq);
-      std::vector<EffectKind> alike = {tried.front().second};
+      const double cut = cut_of(best.scored);
+      const std::vector<double> best_sq = where(best.scored.sq);
+      branches = {best.set};
       for (size_t j = 1; j < tried.size(); ++j) {
-        if (cut_of(tried[j].first) >= kNearlyAsFar * cut && paired_t(best_sq, where(tried[j].first.sq)) < kSeparated) {
-          alike.push_back(tried[j].second);
+        if (cut_of(tried[j].scored) >= kNearlyAsFar * cut && paired_t(best_sq, where(tried[j].scored.sq)) < kSeparated) {
+          branches.push_back(tried[j].set);
         }
       }
-      chosen.push_back(tried.front().second);
-      d.steps.push_back(step_line(std::string("+ ") + manifest_of(tried.front().second).name + ":", tried.front().first));
-      if (alike.size() > 1) {
-        ambiguous = true;
-        for (EffectKind k : alike) {
-          std::vector<EffectKind> set(chosen.begin(), chosen.end() - 1);
-          set.push_back(k);
-          d.ambiguous.push_back(set);
-        }
-        d.steps.push_back("  as good: " + effects_text(alike));
+      const bool on_chosen = std::equal(chosen.begin(), chosen.end(), best.set.begin());
+      chosen = best.set;
+      std::string added = std::string("+ ") + manifest_of(chosen.back()).name;
+      if (!on_chosen) added += " (to " + effects_text({chosen.begin(), chosen.end() - 1}) + ")";
+      d.steps.push_back(step_line(added + ":", best.scored));
+      if (branches.size() > 1) {
+        std::string alike;
+        for (size_t j = 1; j < branches.size(); ++j) alike += (j > 1 ? " | " : "") + effects_text(branches[j]);
+        d.steps.push_back("  as good: " + alike);
       }
-      current_scored = tried.front().first;
+      current_scored = best.scored;
       if (effects_match(current_scored)) break;
     }
+  }
+  if (branches.size() > 1) {
+    ambiguous = true;
+    d.ambiguous = branches;
   }
   // Before naming: can the fitted samples tell the chosen effects from
   // the other effects at all? If not, every look-alike set is as good,
@@ -561,8 +599,6 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // Each alone wants a power law: is its shape shared, with each
     // specimen's stiffness its own?
     if (pt.computed && pt.effect == EffectKind::actee_compliance) {
-      std::vector<size_t> every(whole.size());
-      for (size_t i = 0; i < every.size(); ++i) every[i] = i;
       d.specimens = specimen_shape(Fitter(model, whole, every, {}), whole);
     }
   }

@@ -105,6 +105,7 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
   const double still = std::max({1e-9, 0.01 * peak, 3 * r.rate_noise});
   r.phase.assign(n, Phase::at_rest);
   r.fitted.assign(n, true);
+  r.held.assign(n, false);
   // Within `edge` samples of a time gap (closing-only strokes whose return
   // was not recorded) the rates are one-sided, as at the trace's ends.
   std::vector<bool> near_gap(n, false);
@@ -155,6 +156,7 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
     // reported, not fitted or scored.
     r.fitted[i] = !at_limit[i] && !broken[i] && !blurred[i] && (moving || held) && i >= edge && i + edge < n &&
                   !near_gap[i];
+    r.held[i] = r.fitted[i] && !moving;
   }
 }
 
@@ -192,6 +194,31 @@ std::vector<double> delayed(const std::vector<double>& t, const std::vector<doub
   return out;
 }
 
+std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay) {
+  std::vector<double> out = delayed(t, y, delay);
+  if (delay == 0) return out;
+  const size_t n = t.size();
+  const double step = (t.back() - t.front()) / static_cast<double>(std::max<size_t>(1, n - 1));  // s
+  auto even = [&](size_t a) { return std::abs(t[a + 1] - t[a] - step) <= 0.01 * step; };
+  size_t j = 1;      // the first sample later than the time asked for
+  size_t start = 0;  // the first sample of the stretch sample i is in (delayed() holds before it)
+  for (size_t i = 0; i < n; ++i) {
+    if (i > 0 && !even(i - 1) && t[i] - t[i - 1] > step) start = i;
+    const double at = t[i] - delay;
+    if (at <= t[start] || at >= t.back()) continue;
+    while (t[j] <= at) ++j;
+    // Samples j-2 .. j+1 around the interval, in the stretch and evenly
+    // spaced, else the linear value stays.
+    if (j < start + 2 || j + 1 >= n || !even(j - 2) || !even(j - 1) || !even(j)) continue;
+    const double f = (at - t[j - 1]) / (t[j] - t[j - 1]);
+    // Weights (-s, 1 - f + s, f + s, -s): they sum to 1, reproduce a
+    // line, and their squares sum to 1 with this s.
+    const double s = 0.25 * (std::sqrt(1 + 8 * f * (1 - f)) - 1);
+    out[i] = -s * y[j - 2] + (1 - f + s) * y[j - 1] + (f + s) * y[j] - s * y[j + 1];
+  }
+  return out;
+}
+
 void leave_out_late_readings(std::vector<Replay>& replays, double delay) {
   if (delay <= 0) return;
   for (Replay& r : replays) {
@@ -206,6 +233,17 @@ void leave_out_late_readings(std::vector<Replay>& replays, double delay) {
       // The samples either side of the earlier time must both be predicted.
       const size_t later = static_cast<size_t>(std::upper_bound(r.t.begin(), r.t.end(), at) - r.t.begin());
       if (at <= r.t[start] || later == 0 || later >= n || !source[later] || !source[later - 1]) r.fitted[i] = false;
+    }
+  }
+}
+
+void release_held(std::vector<Replay>& replays, double friction) {
+  for (Replay& r : replays) {
+    for (size_t i = 0; i < r.t.size(); ++i) {
+      if (!r.held[i] || friction < kHeldBand * std::abs(r.slope[i]) * r.x_noise) continue;
+      r.held[i] = false;
+      r.fitted[i] = false;
+      r.phase[i] = Phase::at_rest;
     }
   }
 }

@@ -36,6 +36,9 @@ struct Replay {
   std::vector<double> actee_measured, actee_nominal;  // N, lever with an actee_force column; else empty
   std::vector<Phase> phase;
   std::vector<bool> fitted;      // used in fits and scores: not at a limit, not in the break's snap, resolved
+  // Fitted only as squeezed and all but still: the file's friction band
+  // is small there against the noise the actee passes on (release_held()).
+  std::vector<bool> held;
   // d nominal / d x at each sample (N*m/rad or N/m): how much of the
   // motion sensor's noise the prediction takes on there (a stiff actee's
   // contact passes it on many times over).
@@ -81,6 +84,15 @@ void weigh(std::vector<Replay>& replays, double noise);
 // reading there is as indeterminate as friction at rest.
 void leave_out_late_readings(std::vector<Replay>& replays, double delay);
 
+// A squeezed sample all but still is fitted where friction's band is a
+// small share of the noise the actee's stiffness passes on from the
+// angle; the file's friction decides that at the replay. Where the tool's
+// friction as the data shows it (`friction`, N*m about the hinge, a fit's)
+// is not small there, such a sample is as indeterminate as one at rest,
+// and is left out: at the turn of a squeeze the effort may take any value
+// within the band.
+void release_held(std::vector<Replay>& replays, double friction);
+
 // y (sampled at the increasing times t) at time `at`: linear between
 // samples, held before the first and after the last.
 double value_at(const std::vector<double>& t, const std::vector<double>& y, double at);
@@ -88,6 +100,14 @@ double value_at(const std::vector<double>& t, const std::vector<double>& y, doub
 // y as a sensor `delay` s late reads it: value_at(t, y, t[i] - delay) at
 // every sample, in linear time.
 std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay);
+
+// The same, for a prediction carrying the angle's noise (a fit's columns):
+// between evenly spaced samples by a four-point stencil, exact for a line,
+// that passes white noise at its own variance. Linear interpolation
+// averages two samples' noise (half its variance at half a sample), so a
+// fraction of a sample's delay would cut the noise a stiff actee passes
+// from the angle into the prediction, and read as a late sensor.
+std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay);
 
 // The direction of motion, smoothed over a small speed so that a fit's
 // friction term is continuous (rad/s in, -1..1 out).

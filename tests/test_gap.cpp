@@ -223,6 +223,35 @@ TEST(Gap, TheAnglesNoiseThroughAnInertiaIsPartOfTheNoiseFloor) {
   EXPECT_LT(d.rmse_after, 1.3 * d.noise_through_model);
 }
 
+// A fit's delay between samples: a line is read exactly late, and white
+// noise keeps its variance at every fraction of a sample (linear
+// interpolation halves it at half a sample, which a late sensor of half
+// a millisecond would then win on any prediction from a noisy angle).
+TEST(GapReplay, ADelayBetweenSamplesKeepsTheNoiseItReads) {
+  std::vector<double> t, line, noise;
+  std::mt19937 random(7);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 20000; ++i) {
+    t.push_back(i * 1e-3);
+    line.push_back(3 + 2 * t.back());
+    noise.push_back(unit(random));
+  }
+  for (double fraction : {0.25, 0.5, 0.8}) {
+    const double delay = (7 + fraction) * 1e-3;  // s
+    const std::vector<double> late = delayed_keeping_noise(t, line, delay);
+    for (size_t i = 10; i < t.size(); ++i) ASSERT_NEAR(late[i], 3 + 2 * (t[i] - delay), 1e-12) << i;
+    double kept = 0, linear = 0;
+    const std::vector<double> a = delayed_keeping_noise(t, noise, delay), b = delayed(t, noise, delay);
+    for (size_t i = 10; i < t.size(); ++i) {
+      kept += a[i] * a[i];
+      linear += b[i] * b[i];
+    }
+    const double n = static_cast<double>(t.size() - 10);
+    EXPECT_NEAR(kept / n, 1.0, 0.03) << fraction;
+    EXPECT_NEAR(linear / n, fraction * fraction + (1 - fraction) * (1 - fraction), 0.03) << fraction;
+  }
+}
+
 // A latency's delayed signal, worked by hand on uneven samples: held
 // before the first sample and after the last, linear between; the same as
 // value_at at every shifted time, either way in time.
