@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <stdexcept>
 
 #include "jaw_contact.h"
 #include "load.h"
@@ -135,6 +136,17 @@ fs::path tool_file(const fs::path& source, const fs::path& dir, const std::strin
     std::ofstream(file) << (tool == "press" ? kPress : kSnips);
   } else {
     std::ofstream(file) << laid_flat(source / "objects" / (tool + ".yaml"));
+    // A shipped file written otherwise than laid_flat() expects would slip
+    // its weight into the check unseen: refuse it.
+    const afford::ObjectSpec o = afford::load_object(file.string());
+    for (const afford::EffectSpec& e : o.effects) {
+      if (e.kind == afford::EffectKind::gravity && e.enabled) {
+        throw std::runtime_error(tool + ": the rig copy keeps the shipped file's gravity effect");
+      }
+    }
+    if (!o.functional_pose.rotation.isIdentity(1e-12)) {
+      throw std::runtime_error(tool + ": the rig copy is not laid flat");
+    }
   }
   return file;
 }

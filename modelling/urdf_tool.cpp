@@ -4,6 +4,8 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <map>
 
@@ -21,9 +23,33 @@ using Eigen::Vector3d;
 
 constexpr size_t kMaxUrdfBytes = 16u << 20;  // a description, not its meshes
 
-[[noreturn]] void urdf_error(const std::string& file, const std::string& expected, const std::string& found) {
-  fail(SourceLoc{file, 0, 0}, expected, found);
-}
+// The URDF's path and text: errors name the element they are about by its
+// place in the text (urdfdom keeps no lines).
+struct UrdfText {
+  std::string path, xml;
+
+  // Where the first <tag whose name attribute is `name` starts (any <tag
+  // for an empty name); the file's start where there is none.
+  SourceLoc at(const std::string& tag, const std::string& name = "") const {
+    size_t pos = 0;
+    while ((pos = xml.find("<" + tag, pos)) != std::string::npos) {
+      const size_t after = pos + 1 + tag.size();
+      const bool whole = after < xml.size() && (std::isspace(static_cast<unsigned char>(xml[after])) ||
+                                                xml[after] == '>' || xml[after] == '/');
+      const std::string head = xml.substr(pos, xml.find('>', pos) - pos);
+      if (whole && (name.empty() || head.find("name=\"" + name + "\"") != std::string::npos ||
+                    head.find("name='" + name + "'") != std::string::npos)) {
+        break;
+      }
+      ++pos;
+    }
+    if (pos == std::string::npos) return {path, 1, 1};
+    const size_t newline = pos == 0 ? std::string::npos : xml.rfind('\n', pos - 1);
+    const int line = 1 + static_cast<int>(std::count(xml.begin(), xml.begin() + static_cast<std::ptrdiff_t>(pos), '\n'));
+    const int column = static_cast<int>(pos - (newline == std::string::npos ? 0 : newline + 1)) + 1;
+    return {path, line, column};
+  }
+};
 
 // urdfdom says why it could not read a file through console_bridge: the
 // last error it logged becomes the found part of our error.
@@ -58,7 +84,7 @@ std::string mesh_path(const std::string& urdf, const std::string& name) {
   return fs::path(name).is_absolute() ? name : (here / name).string();
 }
 
-TriangleMesh geometry_mesh(const std::string& urdf, const std::string& link, const urdf::Geometry& g) {
+TriangleMesh geometry_mesh(const UrdfText& urdf, const std::string& link, const urdf::Geometry& g) {
   switch (g.type) {
     case urdf::Geometry::BOX: {
       const auto& b = static_cast<const urdf::Box&>(g);
@@ -72,12 +98,12 @@ TriangleMesh geometry_mesh(const std::string& urdf, const std::string& link, con
     }
     case urdf::Geometry::MESH: {
       const auto& m = static_cast<const urdf::Mesh&>(g);
-      const std::string path = mesh_path(urdf, m.filename);
+      const std::string path = mesh_path(urdf.path, m.filename);
       TriangleMesh mesh;
       try {
         mesh = read_mesh(path, format_says_unit(path) ? std::nullopt : std::optional<double>(1.0));
       } catch (const DataError& e) {
-        urdf_error(urdf, "link '" + link + "' to name a mesh afford can read", e.what());
+        fail(urdf.at("link", link), "link '" + link + "' to name a mesh afford can read", e.what());
       }
       const Vector3d scale(m.scale.x, m.scale.y, m.scale.z);
       for (Vector3d& v : mesh.vertices) v = v.cwiseProduct(scale);
@@ -87,12 +113,12 @@ TriangleMesh geometry_mesh(const std::string& urdf, const std::string& link, con
       return mesh;
     }
   }
-  urdf_error(urdf, "a box, sphere, cylinder or mesh in link '" + link + "'", "another geometry");
+  fail(urdf.at("link", link), "a box, sphere, cylinder or mesh in link '" + link + "'", "another geometry");
 }
 
 // The link's collision geometry (its visual where it has none), in the
 // frame `pose` puts the link in.
-void add_link(const std::string& urdf, const urdf::Link& link, const Isometry3d& pose, TriangleMesh& out) {
+void add_link(const UrdfText& urdf, const urdf::Link& link, const Isometry3d& pose, TriangleMesh& out) {
   bool any = false;
   for (const auto& c : link.collision_array) {
     if (!c || !c->geometry) continue;
@@ -106,7 +132,7 @@ void add_link(const std::string& urdf, const urdf::Link& link, const Isometry3d&
       any = true;
     }
   }
-  if (!any) urdf_error(urdf, "collision or visual geometry in link '" + link.name + "'", "none");
+  if (!any) fail(urdf.at("link", link.name), "collision or visual geometry in link '" + link.name + "'", "none");
 }
 
 // Each link's frame in the root link's, every joint at zero.
@@ -121,12 +147,12 @@ void place_links(const urdf::Link& link, const Isometry3d& pose, std::map<std::s
 }  // namespace
 
 UrdfTool read_urdf_tool(const std::string& path, const std::string& fixed, const std::string& moving) {
-  const std::string xml = read_regular_file(path, kMaxUrdfBytes);  // DataError: missing, a directory, too large
+  const UrdfText urdf{path, read_regular_file(path, kMaxUrdfBytes)};  // DataError: missing, a directory, too large
   LastError errors;
   console_bridge::useOutputHandler(&errors);
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf.xml);
   console_bridge::restorePreviousOutputHandler();
-  if (!model) urdf_error(path, "a URDF urdfdom can read", errors.last.empty() ? "it could not" : shorten(errors.last));
+  if (!model) fail(urdf.at("robot"), "a URDF urdfdom can read", errors.last.empty() ? "it could not" : shorten(errors.last));
 
   // The joint: the one revolute (or continuous) joint, or the one between
   // the named links.
@@ -140,19 +166,21 @@ UrdfTool read_urdf_tool(const std::string& path, const std::string& fixed, const
       joint = j;
     } else if ((j->parent_link_name == fixed && j->child_link_name == moving) ||
                (j->parent_link_name == moving && j->child_link_name == fixed)) {
-      if (!hinge) urdf_error(path, "a revolute joint between '" + fixed + "' and '" + moving + "'", "joint '" + name + "'");
+      if (!hinge) {
+        fail(urdf.at("joint", name), "a revolute joint between '" + fixed + "' and '" + moving + "'", "joint '" + name + "'");
+      }
       joint = j;
     }
   }
   if (fixed.empty() && hinges != 1) {
-    urdf_error(path, "one revolute (or continuous) joint, or --links FIXED,MOVING",
+    fail(urdf.at("robot"), "one revolute (or continuous) joint, or --links FIXED,MOVING",
                hinges == 0 ? "none" : std::to_string(hinges));
   }
   if (!fixed.empty()) {
     for (const std::string& name : {fixed, moving}) {
-      if (!model->getLink(name)) urdf_error(path, "a link '" + name + "'", "none");
+      if (!model->getLink(name)) fail(urdf.at("robot"), "a link '" + name + "'", "none");
     }
-    if (!joint) urdf_error(path, "a joint between links '" + fixed + "' and '" + moving + "'", "none");
+    if (!joint) fail(urdf.at("robot"), "a joint between links '" + fixed + "' and '" + moving + "'", "none");
   }
 
   UrdfTool tool;
@@ -163,17 +191,17 @@ UrdfTool read_urdf_tool(const std::string& path, const std::string& fixed, const
   tool.moving_link = forward ? joint->child_link_name : joint->parent_link_name;
   const Vector3d axis(joint->axis.x, joint->axis.y, joint->axis.z);
   if (!(axis.norm() > 1e-9) || !axis.allFinite()) {
-    urdf_error(path, "an axis of some length in joint '" + joint->name + "'", "(" + std::to_string(axis.x()) + ", " +
+    fail(urdf.at("joint", joint->name), "an axis of some length in joint '" + joint->name + "'", "(" + std::to_string(axis.x()) + ", " +
                                                                              std::to_string(axis.y()) + ", " +
                                                                              std::to_string(axis.z()) + ")");
   }
   tool.limited = joint->type == urdf::Joint::REVOLUTE;
   if (tool.limited) {
-    if (!joint->limits) urdf_error(path, "limits in revolute joint '" + joint->name + "'", "none");
+    if (!joint->limits) fail(urdf.at("joint", joint->name), "limits in revolute joint '" + joint->name + "'", "none");
     tool.lower = joint->limits->lower;
     tool.upper = joint->limits->upper;
     if (!(tool.lower < tool.upper)) {
-      urdf_error(path, "a lower limit below the upper in joint '" + joint->name + "'",
+      fail(urdf.at("joint", joint->name), "a lower limit below the upper in joint '" + joint->name + "'",
                  std::to_string(tool.lower) + " and " + std::to_string(tool.upper));
     }
   }
@@ -186,8 +214,8 @@ UrdfTool read_urdf_tool(const std::string& path, const std::string& fixed, const
   tool.hinge_point = joint_frame.translation();
   tool.hinge_axis = (joint_frame.linear() * axis).normalized();
   tool.fixed.file = tool.moving.file = path;
-  add_link(path, *model->getLink(tool.fixed_link), Isometry3d::Identity(), tool.fixed);
-  add_link(path, *model->getLink(tool.moving_link), to_fixed * frames.at(tool.moving_link), tool.moving);
+  add_link(urdf, *model->getLink(tool.fixed_link), Isometry3d::Identity(), tool.fixed);
+  add_link(urdf, *model->getLink(tool.moving_link), to_fixed * frames.at(tool.moving_link), tool.moving);
   return tool;
 }
 

@@ -24,11 +24,12 @@ struct UrdfTool {
 };
 
 // `fixed` and `moving` name the links; both empty: the one revolute (or
-// continuous) joint's parent and child. DataError at the file (naming the
-// element) when urdfdom cannot read it, when there is no such joint or
-// more than one and no names, when a named link is missing or the two are
-// not joined by one, when an axis has no length, when a link has no
-// geometry, or when a mesh it names cannot be read.
+// continuous) joint's parent and child. DataError at the element's line and
+// column (the document's start where no one element is at fault) when
+// urdfdom cannot read it, when there is no such joint or more than one and
+// no names, when a named link is missing or the two are not joined by one,
+// when an axis has no length, when a link has no geometry, or when a mesh
+// it names cannot be read.
 UrdfTool read_urdf_tool(const std::string& path, const std::string& fixed = "", const std::string& moving = "");
 
 }  // namespace afford::modelling

@@ -348,21 +348,23 @@ std::string arms(const std::string& type, const std::string& axis) {
   return replace_once(replace_once(kArms, "JOINT_TYPE", type), "AXIS", axis);
 }
 
+// Each error is located at the element it is about: the joint at 4:3,
+// link a at 2:3, the document's <robot> at 1:1.
 TEST(ModelUrdfErrors, EachNamesTheFileAndTheElement) {
   EXPECT_THAT(urdf_error(arms("fixed", "0 0 1")),
-              ::testing::HasSubstr("expected one revolute (or continuous) joint, or --links FIXED,MOVING, found none"));
-  EXPECT_THAT(urdf_error(arms("revolute", "0 0 1"), "a", "c"), ::testing::HasSubstr("expected a link 'c', found none"));
-  EXPECT_THAT(urdf_error("<robot name='t'><link name='a'/>"), ::testing::HasSubstr("expected a URDF urdfdom can read"));
+              ::testing::HasSubstr(".urdf:1:1: expected one revolute (or continuous) joint, or --links FIXED,MOVING, found none"));
+  EXPECT_THAT(urdf_error(arms("revolute", "0 0 1"), "a", "c"), ::testing::HasSubstr(":1:1: expected a link 'c', found none"));
+  EXPECT_THAT(urdf_error("<robot name='t'><link name='a'/>"), ::testing::HasSubstr(":1:1: expected a URDF urdfdom can read"));
   EXPECT_THAT(urdf_error(replace_once(arms("revolute", "0 0 1"), "<box size=\"0.1 0.01 0.008\"/>",
                                       "<mesh filename=\"missing.obj\"/>")),
-              ::testing::HasSubstr("expected link 'a' to name a mesh afford can read"));
+              ::testing::HasSubstr(".urdf:2:3: expected link 'a' to name a mesh afford can read"));
   EXPECT_THAT(thrown<DataError>([] { (void)modelling::read_urdf_tool(fs::temp_directory_path().string()); }),
               ::testing::HasSubstr(":0:0: expected"));
   const std::string zero = urdf_error(arms("revolute", "0 0 0"));
   EXPECT_THAT(zero, ::testing::StartsWith(fs::temp_directory_path().string()));
-  EXPECT_THAT(zero, ::testing::HasSubstr("expected an axis of some length in joint 'j', found (0.000000, 0.000000, 0.000000)"));
+  EXPECT_THAT(zero, ::testing::HasSubstr(".urdf:4:3: expected an axis of some length in joint 'j', found (0.000000, 0.000000, 0.000000)"));
   EXPECT_THAT(urdf_error(replace_once(arms("revolute", "0 0 1"), "upper=\"0.5\"", "upper=\"-0.5\"")),
-              ::testing::HasSubstr("expected a lower limit below the upper in joint 'j'"));
+              ::testing::HasSubstr(".urdf:4:3: expected a lower limit below the upper in joint 'j'"));
 }
 
 TEST(ModelUrdf, PrimitivesStandForMeshes) {
