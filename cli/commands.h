@@ -25,6 +25,10 @@ void add_rules(CLI::App& app, Run* run);
 void add_run(CLI::App& app, Run* run);
 void add_live(CLI::App& app, Run* run);
 void add_serve(CLI::App& app, Run* run);
+void add_view(CLI::App& app, Run* run);
+// --port and --bind of serve and view (serve.cpp).
+CLI::Validator port_number();
+CLI::Validator ipv4_address();
 void add_replay(CLI::App& app, Run* run);
 void add_schema(CLI::App& app, Run* run);
 void add_test(CLI::App& app, Run* run);

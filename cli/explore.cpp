@@ -7,6 +7,10 @@
 // (explore/explore.h); prints the summary in words and writes the tables,
 // explore.json and the maps (explore/reports.h). A shard writes only its
 // explore.json; --merge joins the shards' into the files of a whole run.
+// It says how many sessions it will run before it starts, and shows its
+// progress on stderr (cli/progress.h). The output folder is checked before
+// the work starts (engine/output_file.h), and cleared of the files an
+// earlier explore wrote there and this one did not (an actee's old maps).
 #include <filesystem>
 #include <iostream>
 
@@ -15,6 +19,7 @@
 #include "effort_axes.h"
 #include "explore_json.h"
 #include "option_checks.h"
+#include "output_file.h"
 #include "parallel.h"
 #include "progress.h"
 #include "reports.h"
@@ -30,7 +35,41 @@ struct ExploreOptions {
   GridOptions grid;
   int threads = 0;
   bool fixed_efforts = false;
+  bool force = false;  // replace files afford did not write
 };
+
+// The points of a whole grid, each at most one session (explore skips
+// those its thresholds already decide): every fitting actee's placements,
+// thumbs, grasps and efforts.
+long long grid_sessions(const GridInfo& g) {
+  long long total = 0;
+  for (const GridActee& a : g.actees) {
+    if (!a.fits) continue;
+    const size_t efforts = a.efforts.empty() ? g.efforts.size() : a.efforts.size();
+    total += static_cast<long long>(a.placements.size() * g.thumbs.size() * g.grasps.size() * efforts);
+  }
+  return total;
+}
+
+// The files a run writes whatever the results, checked before the work:
+// an input or a file afford did not write there is refused at once, not
+// after hours.
+void check_outputs_first(const std::string& dir, bool shard) {
+  const fs::path d(dir);
+  if (shard) {
+    check_output((d / "explore.json").string());
+    return;
+  }
+  for (const char* name : {"points.csv", "thresholds.csv", "summary.txt", "explore.json"}) {
+    check_output((d / name).string());
+  }
+}
+
+// Removes what an earlier explore wrote into the folder and this one did not.
+void clear_stale(const std::string& dir) {
+  clear_stale_outputs(dir);
+  clear_stale_outputs((fs::path(dir) / "maps").string());
+}
 
 // "K/N" with 1 <= K <= N.
 bool parse_shard(const std::string& text, Shard* shard) {
@@ -91,6 +130,10 @@ void print_written(const std::vector<std::string>& written) {
 int merge_shards(const ExploreOptions& o) {
   if (!o.object.empty()) return usage_error("explore --merge takes the shards' folders, not an OBJECT");
   if (o.out_dir.empty()) return usage_error("explore --merge needs --out DIR for the joined files");
+  std::vector<std::string> inputs;
+  for (const std::string& dir : o.merge) inputs.push_back((fs::path(dir) / "explore.json").string());
+  const OutputScope scope({.writer = "explore", .force = o.force, .inputs = inputs});
+  check_outputs_first(o.out_dir, false);
   GridInfo grid;
   std::vector<ExploreResult> parts;
   for (const std::string& dir : o.merge) {
@@ -107,6 +150,7 @@ int merge_shards(const ExploreOptions& o) {
   }
   const ExploreResult whole = merge(grid, std::move(parts));
   const std::vector<std::string> written = write_explore(o.out_dir, grid, whole);
+  clear_stale(o.out_dir);
   std::cout << summary_text(grid, whole);
   print_written(written);
   return 0;
@@ -126,6 +170,9 @@ int explore_command(const ExploreOptions& o) {
   grid.scale_efforts = !o.fixed_efforts;
   Shard shard;
   if (!o.shard.empty()) parse_shard(o.shard, &shard);  // checked by its validator
+  std::vector<std::string> inputs = {files.object, files.agent, files.rules, files.grasps};
+  inputs.insert(inputs.end(), files.actees.begin(), files.actees.end());
+  const OutputScope scope({.writer = "explore", .force = o.force, .inputs = inputs});
 
   Explorer e;
   try {
@@ -134,6 +181,16 @@ int explore_command(const ExploreOptions& o) {
     return usage_error(std::string("explore: ") + error.what());
   }
   const int threads = o.threads > 0 ? o.threads : default_threads();
+  std::string dir = o.out_dir;
+  if (dir.empty()) {
+    dir = "out/explore-" + e.grid.object;
+    if (!shard.whole()) dir += "-shard-" + std::to_string(shard.part) + "-of-" + std::to_string(shard.count);
+  }
+  check_outputs_first(dir, !shard.whole());
+  const long long sessions = grid_sessions(e.grid);
+  std::cerr << "explore: " << sessions << " grid points, each at most one session"
+            << (shard.whole() ? "" : " in the whole grid (this shard runs about 1/" + std::to_string(shard.count) + ")")
+            << " on " << threads << (threads == 1 ? " thread" : " threads") << "; progress on stderr\n";
   if (grid.scale_efforts) {
     TerminalProgress progress("scouting session");  // the common axis, to find where each actee turns
     fit_effort_axes(e, threads, [&](size_t done, size_t total) {
@@ -146,21 +203,18 @@ int explore_command(const ExploreOptions& o) {
     result = explore(e, shard, threads,
                      [&](size_t done, size_t total) { progress.update(static_cast<long long>(done), static_cast<long long>(total)); });
   }
-  std::string dir = o.out_dir;
-  if (dir.empty()) {
-    dir = "out/explore-" + e.grid.object;
-    if (!shard.whole()) dir += "-shard-" + std::to_string(shard.part) + "-of-" + std::to_string(shard.count);
-  }
   if (!shard.whole()) {
     fs::create_directories(dir);
     const std::string file = (fs::path(dir) / "explore.json").string();
     write_file_checked(file, explore_json(e.grid, result));
+    clear_stale(dir);
     std::cout << "shard " << shard.part << "/" << shard.count << ": " << result.series.size()
               << " series; join the shards with afford explore --merge DIR... --out DIR\n";
     print_written({file});
     return 0;
   }
   const std::vector<std::string> written = write_explore(dir, e.grid, result);
+  clear_stale(dir);
   std::cout << summary_text(e.grid, result);
   print_written(written);
   return 0;
@@ -205,6 +259,7 @@ void add_explore(CLI::App& app, Run* run) {
       ->type_name(kDir)
       ->expected(1, -1);
   cmd->add_option("--out", o->out_dir, "the output folder (default out/explore-OBJECT)")->type_name(kDir);
+  cmd->add_flag("--force", o->force, "replace existing files in the output folder that afford did not write");
   cmd->callback([run, o] { *run = [o] { return explore_command(*o); }; });
 }
 

@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "option_checks.h"
+#include "output_file.h"
 #include "did_you_mean.h"
 #include "diagnose.h"
 #include "patch.h"
@@ -50,9 +51,33 @@ CLI::Validator effect_list() {
       "");  // no description: the help line says what is allowed
 }
 
+// The most rows a diagnosis takes, over all its traces. Measured (issue 31,
+// one core): 100k rows 2.0 s and 94 MB, 1M rows 28.7 s and 789 MB: the fit
+// grows faster than its rows, so that 10M rows would take several minutes
+// and some 8 GB. Longer traces are refused, with the reason, not left to run.
+constexpr size_t kMaxGapRows = 1'000'000;
+// More rows than this are announced before the fit starts.
+constexpr size_t kAnnouncedGapRows = 100'000;
+
+// Refuses a measurement too long to diagnose; announces a long one.
+void check_rows(const Measurement& m) {
+  size_t rows = 0;
+  for (const Trace& t : m.traces) rows += t.size();
+  if (rows > kMaxGapRows) {
+    throw std::runtime_error(m.file + ": " + std::to_string(rows) + " rows in its traces, more than the " +
+                             std::to_string(kMaxGapRows) +
+                             " a diagnosis takes (its fit grows faster than the rows: 1M rows take about 30 s "
+                             "and 0.8 GB); resample the traces (every 10th row of a 10 kHz trace is 1 kHz) or "
+                             "cut them to the part that matters");
+  }
+  if (rows > kAnnouncedGapRows) {
+    std::cerr << "gap: " << rows << " rows to fit; this takes a while (1M rows: about 30 s)\n";
+  }
+}
+
 struct GapOptions {
   std::string file, patch_dir, out_dir, effects;
-  bool json = false, probe = false;
+  bool json = false, probe = false, force = false;
 };
 
 int gap(const GapOptions& o) {
@@ -62,6 +87,9 @@ int gap(const GapOptions& o) {
   std::string error;
   if (!o.effects.empty() && !parse_library(o.effects, &options.library, &error)) return usage_error(error);
   const Measurement m = load_measurement(file);
+  check_rows(m);
+  // Its files are never outputs; files afford did not write are kept (engine/output_file.h).
+  const OutputScope scope({.writer = "gap", .force = o.force, .inputs = m.files});
   if (o.probe) {  // active modelling: the lever and spring from a probing trace
     const ProbeResult p = probe_lever(m);
     std::cout << probe_text(p);
@@ -69,6 +97,7 @@ int gap(const GapOptions& o) {
       std::filesystem::create_directories(patch_dir);
       const std::string out = (std::filesystem::path(patch_dir) / "object.yaml").string();
       write_probed_object(p, out);
+      clear_stale_outputs(patch_dir);
       std::cerr << "wrote " << out << "\n";
     }
     return 0;
@@ -78,9 +107,11 @@ int gap(const GapOptions& o) {
   std::cout << (o.json ? report_json(d, &nominal) + "\n" : report_text(d, &nominal));
   if (!o.out_dir.empty()) {
     for (const std::string& written : write_gap_plots(d, o.out_dir)) std::cerr << "wrote " << written << "\n";
+    clear_stale_outputs(o.out_dir);
   }
   if (!patch_dir.empty()) {
     for (const std::string& written : write_patch(m, d, patch_dir)) std::cerr << "wrote " << written << "\n";
+    clear_stale_outputs(patch_dir);
   }
   return 0;
 }
@@ -101,6 +132,7 @@ void add_gap(CLI::App& app, Run* run) {
   cmd->add_option("--write-patch", o->patch_dir, "write the fitted effects (or the probed object) into DIR")
       ->type_name(kDir);
   cmd->add_flag("--probe", o->probe, "fit the lever and spring from a probing trace instead");
+  cmd->add_flag("--force", o->force, "replace existing files in DIR that afford did not write");
   cmd->callback([run, o] { *run = [o] { return gap(*o); }; });
 }
 

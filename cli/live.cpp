@@ -21,6 +21,7 @@
 
 #include "commands.h"
 #include "option_checks.h"
+#include "output_file.h"
 #include "session_outputs.h"
 #include "recording.h"
 #include "report_decoder.h"
@@ -74,6 +75,9 @@ int live(const LiveOptions& o) {
   // is out/<session> unless --out says. A live session is always recorded:
   // to --record FILE, or by default to DIR/live.afrec.
   const std::filesystem::path dir = output_dir(out_dir, session.name);
+  std::vector<std::string> inputs = session.files;
+  inputs.push_back(device_file);
+  const OutputScope scope({.writer = "live", .force = false, .inputs = inputs});  // engine/output_file.h
   SessionOutputs outputs(dir);
   if (record.empty()) record = (dir / "live.afrec").string();
   std::optional<Recorder> recorder;
@@ -128,6 +132,7 @@ int live(const LiveOptions& o) {
     }
     std::printf("recorded %lld frames to %s\n", static_cast<long long>(recorder->frames()), record.c_str());
   }
+  outputs.close();  // checked, and renamed into place (engine/output_file.h)
   std::printf("wrote %s\n", outputs.written().c_str());
   return 0;
 }

@@ -73,7 +73,7 @@ int run_program(int argc, char** argv) {
   app.allow_extras();            // unknown words get our own message below
   Run run;
   for (auto add : {add_check, add_describe, add_explore, add_gap, add_render, add_guide, add_rules, add_run, add_live,
-                   add_serve, add_replay, add_schema, add_test, add_export, add_model, add_completion}) {
+                   add_serve, add_view, add_replay, add_schema, add_test, add_export, add_model, add_completion}) {
     add(app, &run);
   }
   for (CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; })) c->allow_extras();

@@ -1,24 +1,37 @@
-// afford model MESH|URDF [--unit mm|cm|m] [--links FIXED,MOVING]
-//                        [--density KG_M3 | --mass G] [--symmetry-tolerance R] [--json]:
-// the static modelling steps of the paper (Sec. 3.2, steps 2 and 3) for one
-// rigid mesh: its volume and surface (exact for a closed mesh, voxels for
-// an open one), its mass, centre of gravity and inertia, and its planes of
-// symmetry with how well each holds. For a URDF of a two-part tool: the
-// hinge, its limits, and each part's volume, mass and inertia about it.
+// afford model MESH|URDF|FIXED MOVING [--unit mm|cm|m] [--links FIXED,MOVING]
+//              [--hinge X,Y,Z,AX,AY,AZ --range MIN,MAX] [--density KG_M3 | --mass G]
+//              [--spring K,REST [--spring-at MM]] [--emphasis FROM,TO] [--application FROM,TO]
+//              [--symmetry-tolerance R] [--out objects/NAME.yaml] [--json]:
+// the modelling steps of the paper (Sec. 3.2). For one rigid mesh: its
+// volume and surface (exact for a closed mesh, voxels for an open one), its
+// mass, centre of gravity and inertia, its planes of symmetry with how well
+// each holds, and how it rests. For a two-part tool (a URDF, or two meshes
+// and the hinge): the hinge, its limits, each part's volume, mass and
+// inertia about it, the lever found from the shape, and with --out the
+// object file (modelling/tool_model.h).
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <sstream>
+#include <stdexcept>
 #include <numbers>
 #include <optional>
 
 #include "commands.h"
+#include "files.h"
 #include "json_output.h"
+#include "lever.h"
+#include "lever_geometry.h"
 #include "mass_properties.h"
 #include "mesh_file.h"
+#include "mesh_pair.h"
 #include "option_checks.h"
+#include "output_file.h"
 #include "stable_poses.h"
 #include "symmetry_planes.h"
+#include "tool_model.h"
 #include "units.h"
 #include "urdf_tool.h"
 
@@ -31,11 +44,49 @@ using modelling::SymmetryPlane;
 using modelling::TriangleMesh;
 
 struct ModelOptions {
-  std::string file, unit, links;  // links: "FIXED,MOVING" of a URDF
+  std::vector<std::string> inputs;  // one mesh or URDF, or the fixed and the moving mesh
+  std::string file, unit, links;  // file: the first input; links: "FIXED,MOVING" of a URDF
   double density = 0, mass_g = 0;  // kg/m^3, g; 0: not given
   double tolerance = modelling::kSymmetryTolerance;
   bool json = false;
+  std::string out;                 // the object file to write
+  bool force = false;              // --out may replace a file afford did not write (engine/output_file.h)
+  std::string hinge, range;        // two meshes: "X,Y,Z,AX,AY,AZ" (mm, plain), "MIN,MAX" (deg)
+  std::string spring, spring_at;   // "K_N_M_PER_RAD,REST_DEG", "MM"
+  std::string emphasis, application;  // "FROM,TO", mm
+  std::string rotation;               // "RX,RY,RZ", deg
+  bool arm_dynamics = false;          // arm_inertia enabled
 };
+
+// Comma-separated numbers, `count` of them (already checked by numbers()).
+std::vector<double> numbers_of(const std::string& text) {
+  std::vector<double> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) out.push_back(*parse_number(item));
+  return out;
+}
+
+CLI::Validator numbers(size_t count, const std::string& what) {
+  return CLI::Validator(
+      [count, what](std::string& text) -> std::string {
+        std::stringstream in(text);
+        std::string item;
+        size_t n = 0;
+        bool ok = !text.empty() && text.back() != ',';
+        while (ok && std::getline(in, item, ',')) ok = parse_number(item).has_value() && ++n <= count;
+        if (ok && n == count) return "";
+        return "expected " + what + ", found '" + text + "'";
+      },
+      "");  // the type name says the form
+}
+
+std::optional<RangeSpec> region_of(const std::string& text, const char* option) {
+  if (text.empty()) return std::nullopt;
+  const std::vector<double> v = numbers_of(text);
+  if (!(v[0] < v[1])) throw std::invalid_argument(std::string(option) + ": FROM below TO, found '" + text + "'");
+  return RangeSpec{v[0] * 1e-3, v[1] * 1e-3, {}};
+}
 
 std::string q(double si, const Dimension& d) { return format_quantity(si, d); }
 
@@ -215,9 +266,9 @@ Json report_json(const ModelOptions& o, const TriangleMesh& mesh, const MassProp
   return j;
 }
 
-// A URDF's two parts: the hinge, and each part's volume, mass (the given
-// mass shared by volume, or the density), centre and inertia about the
-// hinge axis, all in the fixed link's frame with the joint at zero.
+// A two-part tool's parts: the hinge, and each part's volume, mass (the
+// given mass shared by volume, or the density), centre and inertia about
+// the hinge axis, all in the fixed part's frame with the joint at zero.
 struct UrdfPart {
   const char* name;
   const TriangleMesh* mesh;
@@ -225,20 +276,180 @@ struct UrdfPart {
   double kg = 0;
 };
 
-int model_urdf(const ModelOptions& o) {
+// The tool: a URDF's two links, or two meshes and --hinge; --range gives
+// or replaces the joint's limits.
+modelling::UrdfTool read_tool(const ModelOptions& o) {
+  modelling::UrdfTool tool;
+  if (o.inputs.size() == 2) {
+    if (o.hinge.empty() || o.range.empty()) {
+      throw std::invalid_argument("two meshes (the fixed and the moving part) need --hinge X,Y,Z,AX,AY,AZ and --range MIN,MAX");
+    }
+    const std::vector<double> h = numbers_of(o.hinge), r = numbers_of(o.range);
+    const double rad = std::numbers::pi / 180;
+    return modelling::mesh_pair_tool(o.inputs[0], o.inputs[1], metres_per_unit(o.unit),
+                                     Eigen::Vector3d(h[0], h[1], h[2]) * 1e-3, Eigen::Vector3d(h[3], h[4], h[5]),
+                                     r[0] * rad, r[1] * rad);
+  }
+  if (!o.hinge.empty()) throw std::invalid_argument("--hinge is for two meshes; a URDF's joint is its hinge");
   std::string fixed, moving;
   if (!o.links.empty()) {
     const size_t comma = o.links.find(',');
     fixed = o.links.substr(0, comma);
     moving = o.links.substr(comma + 1);
   }
-  const modelling::UrdfTool tool = modelling::read_urdf_tool(o.file, fixed, moving);
+  tool = modelling::read_urdf_tool(o.file, fixed, moving);
+  if (!o.range.empty()) {
+    const std::vector<double> r = numbers_of(o.range);
+    if (!(r[0] < r[1])) throw std::invalid_argument("--range: MIN below MAX, found '" + o.range + "'");
+    tool.limited = true;
+    tool.lower = r[0] * std::numbers::pi / 180;
+    tool.upper = r[1] * std::numbers::pi / 180;
+  }
+  return tool;
+}
+
+// The object's name: the --out file's stem, a name as the object format
+// takes it.
+std::string object_name(const std::string& out) {
+  const std::string stem = std::filesystem::path(out).stem().string();
+  bool ok = !stem.empty() && (std::isalpha(static_cast<unsigned char>(stem[0])) || stem[0] == '_');
+  for (char c : stem) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-');
+  if (!ok) throw std::invalid_argument("--out: a file named as the object is (letters, digits, _ and -), found '" + out + "'");
+  return stem;
+}
+
+modelling::ToolModelOptions tool_options(const ModelOptions& o) {
+  modelling::ToolModelOptions t;
+  t.name = o.out.empty() ? "tool" : object_name(o.out);
+  if (o.mass_g > 0) t.mass = o.mass_g * 1e-3;
+  if (o.density > 0) t.density = o.density;
+  if (!o.spring.empty()) {
+    const std::vector<double> v = numbers_of(o.spring);
+    if (!(v[0] > 0) || !(v[1] > 0) || !(v[1] < 180)) {
+      throw std::invalid_argument("--spring: a torsion above 0 N*m/rad and a free opening between 0 and 180 deg, found '" +
+                                  o.spring + "'");
+    }
+    modelling::SpringGiven s{v[0], v[1] * std::numbers::pi / 180, std::nullopt};
+    if (!o.spring_at.empty()) s.position = numbers_of(o.spring_at)[0] * 1e-3;
+    t.spring = s;
+  } else if (!o.spring_at.empty()) {
+    throw std::invalid_argument("--spring-at places the spring --spring gives");
+  }
+  t.regions.emphasis = region_of(o.emphasis, "--emphasis");
+  t.regions.application = region_of(o.application, "--application");
+  if (!o.rotation.empty()) t.rotation = Eigen::Vector3d(numbers_of(o.rotation).data()) * (std::numbers::pi / 180);
+  t.arm_dynamics = o.arm_dynamics;
+  t.symmetry_tolerance = o.tolerance;
+  return t;
+}
+
+std::string region_text(const RangeSpec& r) { return q(r.from, dim::length) + " to " + q(r.to, dim::length); }
+
+void print_lever(const modelling::UrdfTool& tool, const modelling::LeverGeometry& l) {
+  std::cout << "  lever (the object frame: the hinge at the origin along +z, the fixed arm along +x):\n";
+  std::cout << "    the parts meet at joint angle " << q(0.0 - l.theta_at_zero * l.joint_sign + 0.0, dim::angle)
+            << " (opening 0 deg); the joint's limits open it from " << q(l.theta_min, dim::angle) << " to "
+            << q(l.theta_max, dim::angle)
+            << (l.closes_on_contact ? " (the lower limit closes it further: theta_min is where the parts meet)" : "")
+            << "\n";
+  double widest = 0, at = 0;
+  for (const modelling::GapBin& b : l.gap) {
+    if (b.angle > widest) widest = b.angle, at = 0.5 * (b.from + b.to);
+  }
+  std::cout << "    gap between the closed parts along the arm: 0 deg where they meet, up to " << q(widest, dim::angle)
+            << " at " << q(at, dim::length) << "\n";
+  std::cout << "    pattern " << pattern_name(l.pattern) << ": jaws (application) " << region_text(l.application)
+            << (l.application_found ? " (where the gap is smallest)" : " (as given)") << ", handle (emphasis) "
+            << region_text(l.emphasis) << (l.emphasis_found ? " (the other end from the jaws)" : " (as given)")
+            << "; the arm " << region_text(l.arm) << "\n";
+  (void)tool;
+}
+
+void print_model(const modelling::ToolModel& m) {
+  std::cout << "  the tool at rest (" << q(m.rest, dim::angle) << "): mass " << q(m.mass(), dim::mass) << " (from "
+            << m.mass_from << "), centre of gravity " << qv(m.centre_of_gravity, dim::length)
+            << ", the moving part's inertia about the hinge " << q(m.arm_inertia, dim::inertia) << "\n";
+  std::cout << "  plane of symmetry" << (m.symmetry.planes.empty() ? " (none within the tolerance; the nearest)" : "")
+            << ": normal " << direction(m.plane.normal) << " through " << qv(m.plane.point, dim::length)
+            << ", the reflection " << q(m.plane.score, dim::length) << " RMS from the surface\n";
+  if (!m.resting.faces.empty()) {
+    const modelling::RestingFace& f = m.resting.faces.front();
+    std::cout << "  rests most stably on: down " << direction(f.down) << " (object frame), the centre "
+              << q(f.height, dim::length) << " above the face, " << q(f.margin, dim::length) << " inside its nearest edge\n";
+  }
+  std::cout << "  for functioning (the plane of symmetry parallel to gravity, Sec. 4.4): rotation ["
+            << q(m.pose_rotation.x(), dim::angle) << ", " << q(m.pose_rotation.y(), dim::angle) << ", "
+            << q(m.pose_rotation.z(), dim::angle) << "]\n";
+  int fixed = 0;
+  for (const modelling::ConvexPart& p : m.parts) fixed += p.arm == Arm::fixed;
+  std::cout << "  contact geometry: " << m.parts.size() << " convex parts (" << fixed << " fixed, "
+            << m.parts.size() - fixed << " moving)\n";
+  if (m.spring) {
+    std::cout << "  spring: " << q(m.spring->constant, dim::stiffness) << " at " << q(m.spring->position, dim::length)
+              << (m.spring->rest_length > 0 ? ", free length " + q(m.spring->rest_length, dim::length)
+                                            : ", preload " + q(m.spring->preload, dim::force))
+              << "\n";
+  } else {
+    std::cout << "  spring: none (a URDF or a mesh has none): give --spring K_N_M_PER_RAD,REST_DEG, or fit one with afford "
+                 "gap --probe\n";
+  }
+}
+
+Json lever_json(const modelling::LeverGeometry& l) {
+  auto region = [](const RangeSpec& r) { return Json::array({json_number(r.from), json_number(r.to)}); };
+  return Json{{"pattern", pattern_name(l.pattern)},
+              {"theta_min_rad", json_number(l.theta_min)},
+              {"theta_max_rad", json_number(l.theta_max)},
+              {"theta_min_from_contact", l.closes_on_contact},
+              {"opening_at_joint_zero_rad", json_number(l.theta_at_zero)},
+              {"arm_m", region(l.arm)},
+              {"application_m", region(l.application)},
+              {"application_found", l.application_found},
+              {"emphasis_m", region(l.emphasis)},
+              {"emphasis_found", l.emphasis_found}};
+}
+
+Json model_json(const modelling::ToolModel& m) {
+  return Json{{"mass_kg", json_number(m.mass())},
+              {"mass_from", m.mass_from},
+              {"rest_rad", json_number(m.rest)},
+              {"centre_of_gravity_m", vec_json(m.centre_of_gravity)},
+              {"arm_inertia_kg_m2", json_number(m.arm_inertia)},
+              {"symmetry_plane", plane_json(m.plane)},
+              {"functional_rotation_rad", vec_json(m.pose_rotation)},
+              {"parts", m.parts.size()},
+              {"spring", m.spring.has_value()}};
+}
+
+int model_two_part(const ModelOptions& o) {
+  const modelling::UrdfTool tool = read_tool(o);
   UrdfPart parts[2] = {{"fixed", &tool.fixed, modelling::mass_properties(tool.fixed)},
                        {"moving", &tool.moving, modelling::mass_properties(tool.moving)}};
   const double volume = parts[0].p.volume + parts[1].p.volume;
   for (UrdfPart& part : parts) {
     part.kg = o.mass_g > 0 ? o.mass_g * 1e-3 * part.p.volume / volume : o.density * part.p.volume;
   }
+
+  // The lever, and with a mass the whole model: an error with --out, a line
+  // of the report without.
+  const bool has_mass =
+      o.mass_g > 0 || o.density > 0 || (tool.fixed_inertial.given && tool.moving_inertial.given);
+  std::optional<modelling::LeverGeometry> lever;
+  std::optional<modelling::ToolModel> whole;
+  std::string no_lever;
+  const modelling::ToolModelOptions options = tool_options(o);
+  try {
+    if (has_mass || !o.out.empty()) {
+      whole = modelling::model_tool(tool, options);
+      lever = whole->lever;
+    } else {
+      lever = modelling::lever_geometry(tool, options.regions);
+    }
+  } catch (const DataError& e) {
+    if (!o.out.empty()) throw;
+    no_lever = e.what();
+  }
+
   if (o.json) {
     Json j;
     j["file"] = o.file;
@@ -260,35 +471,47 @@ int model_urdf(const ModelOptions& o) {
       }
       j[part.name] = pj;
     }
+    j["lever"] = lever ? lever_json(*lever) : Json(no_lever);
+    if (whole) j["model"] = model_json(*whole);
     std::cout << j.dump() << "\n";
-    return 0;
-  }
-  std::cout << "model of " << o.file << ": joint '" << tool.joint << "' turns link '" << tool.moving_link
-            << "' (moving) against '" << tool.fixed_link << "' (fixed); in the fixed link's frame, the joint at 0:\n";
-  std::cout << "  hinge through " << qv(tool.hinge_point, dim::length) << " about " << direction(tool.hinge_axis);
-  if (tool.limited) {
-    std::cout << ", from " << q(tool.lower, dim::angle) << " to " << q(tool.upper, dim::angle) << "\n";
   } else {
-    std::cout << ", continuous (no limits)\n";
-  }
-  for (const UrdfPart& part : parts) {
-    std::cout << "  " << part.name << " part: " << part.mesh->triangles.size() << " triangles, "
-              << (part.p.exact ? "closed" : "not closed (voxels of " + q(part.p.voxel_size, dim::length) + ")")
-              << ", volume " << format_quantity(part.p.volume * 1e6, dim::none) << " cm^3, centre "
-              << qv(part.p.centroid, dim::length) << "\n";
-    if (part.kg > 0) {
-      const Eigen::Matrix3d I = modelling::inertia_about(part.p, part.kg, tool.hinge_point);
-      std::cout << "    mass " << q(part.kg, dim::mass) << ", inertia about the hinge "
-                << q(tool.hinge_axis.dot(I * tool.hinge_axis), dim::inertia) << "\n";
+    std::cout << "model of " << o.file << ": joint '" << tool.joint << "' turns link '" << tool.moving_link
+              << "' (moving) against '" << tool.fixed_link << "' (fixed); in the fixed link's frame, the joint at 0:\n";
+    std::cout << "  hinge through " << qv(tool.hinge_point, dim::length) << " about " << direction(tool.hinge_axis);
+    if (tool.limited) {
+      std::cout << ", from " << q(tool.lower, dim::angle) << " to " << q(tool.upper, dim::angle) << "\n";
+    } else {
+      std::cout << ", continuous (no limits)\n";
     }
+    for (const UrdfPart& part : parts) {
+      std::cout << "  " << part.name << " part: " << part.mesh->triangles.size() << " triangles, "
+                << (part.p.exact ? "closed" : "not closed (voxels of " + q(part.p.voxel_size, dim::length) + ")")
+                << ", volume " << format_quantity(part.p.volume * 1e6, dim::none) << " cm^3, centre "
+                << qv(part.p.centroid, dim::length) << "\n";
+      if (part.kg > 0) {
+        const Eigen::Matrix3d I = modelling::inertia_about(part.p, part.kg, tool.hinge_point);
+        std::cout << "    mass " << q(part.kg, dim::mass) << ", inertia about the hinge "
+                  << q(tool.hinge_axis.dot(I * tool.hinge_axis), dim::inertia) << "\n";
+      }
+    }
+    if (parts[0].kg > 0) {
+      const Eigen::Vector3d centre = (parts[0].kg * parts[0].p.centroid + parts[1].kg * parts[1].p.centroid) /
+                                     (parts[0].kg + parts[1].kg);
+      std::cout << "  the tool: mass " << q(parts[0].kg + parts[1].kg, dim::mass) << ", centre of gravity "
+                << qv(centre, dim::length) << "\n";
+    } else if (!has_mass) {
+      std::cout << "  mass: give --mass G (shared by volume) or --density KG_M3\n";
+    }
+    if (lever) {
+      print_lever(tool, *lever);
+    } else {
+      std::cout << "  lever: not found: " << no_lever << "\n";
+    }
+    if (whole) print_model(*whole);
   }
-  if (parts[0].kg > 0) {
-    const Eigen::Vector3d centre = (parts[0].kg * parts[0].p.centroid + parts[1].kg * parts[1].p.centroid) /
-                                   (parts[0].kg + parts[1].kg);
-    std::cout << "  the tool: mass " << q(parts[0].kg + parts[1].kg, dim::mass) << ", centre of gravity "
-              << qv(centre, dim::length) << "\n";
-  } else {
-    std::cout << "  mass: give --mass G (shared by volume) or --density KG_M3\n";
+  if (!o.out.empty()) {
+    write_file_checked(o.out, modelling::object_yaml(*whole));  // WriteError names the file, exit 1
+    std::cout << (o.json ? "" : "wrote ") << (o.json ? "" : o.out + "\n");
   }
   return 0;
 }
@@ -305,9 +528,16 @@ bool is_urdf(const std::string& file) {
   return file.size() >= 5 && (file.compare(file.size() - 5, 5, ".urdf") == 0 || file.compare(file.size() - 5, 5, ".URDF") == 0);
 }
 
-int model(const ModelOptions& o) {
-  if (is_urdf(o.file)) return model_urdf(o);
+int model_rigid(const ModelOptions& o) {
   if (!o.links.empty()) return usage_error("model: --links names the links of a URDF; " + o.file + " is a mesh");
+  if (o.arm_dynamics) return usage_error("model: --arm-dynamics is for a two-part tool; " + o.file + " is one mesh");
+  for (const std::string* two_part :
+       {&o.out, &o.hinge, &o.range, &o.spring, &o.spring_at, &o.emphasis, &o.application, &o.rotation}) {
+    if (!two_part->empty()) {
+      return usage_error("model: --out, --hinge, --range, --spring, --rotation and the regions are for a two-part tool (a URDF, or "
+                         "two meshes); " + o.file + " is one mesh");
+    }
+  }
   const TriangleMesh mesh = modelling::read_mesh(o.file, metres_per_unit(o.unit));
   const double size = (modelling::box_max(mesh) - modelling::box_min(mesh)).norm();
   MassProperties p = modelling::mass_properties(mesh);
@@ -332,15 +562,72 @@ int model(const ModelOptions& o) {
   return 0;
 }
 
+int model(ModelOptions o) {
+  o.file = o.inputs.front();
+  const OutputScope scope({.writer = "model", .force = o.force, .inputs = o.inputs});  // --out never over an input
+  try {
+    if (o.inputs.size() == 2 || is_urdf(o.file)) {
+      if (o.inputs.size() == 2 && !o.links.empty()) return usage_error("model: --links names the links of a URDF");
+      return model_two_part(o);
+    }
+    return model_rigid(o);
+  } catch (const std::invalid_argument& e) {
+    return usage_error(std::string("model: ") + e.what());
+  }
+}
+
 }  // namespace
 
 void add_model(CLI::App& app, Run* run) {
   CLI::App* cmd = app.add_subcommand(
       "model",
       "model an object from its mesh (volume, mass, centre of gravity, inertia, planes of symmetry) or a two-part tool "
-      "from its URDF (the hinge and its limits, each part's mass and inertia about the hinge)");
+      "from its URDF or two meshes (the hinge and its limits, each part's mass and inertia about the hinge, the lever "
+      "pattern and the jaws and handle found from the gap between the parts; --out writes the object file)");
   auto o = std::make_shared<ModelOptions>();
-  cmd->add_option("INPUT", o->file, "a mesh file (OBJ, STL, PLY with --unit; DAE, glTF) or a URDF of a two-part tool")->required()->type_name(kFile);
+  cmd->add_option("INPUT", o->inputs,
+                  "a mesh file (OBJ, STL, PLY with --unit; DAE, glTF), a URDF of a two-part tool, or two meshes: the "
+                  "fixed and the moving part (with --hinge and --range)")
+      ->required()
+      ->expected(1, 2)
+      ->type_name(kFile);
+  cmd->add_option("--out", o->out, "write the two-part tool's object file (objects/NAME.yaml; NAME is the object's name)")
+      ->type_name(kFile);
+  cmd->add_flag("--force", o->force, "with --out: replace an existing file that afford did not write");
+  cmd->add_option("--hinge", o->hinge,
+                  "two meshes: the hinge's point in mm and its axis (plain numbers) in the meshes' frame; the moving "
+                  "part opens by the right-hand rule about the axis")
+      ->type_name("X,Y,Z,AX,AY,AZ")
+      ->check(numbers(6, "six numbers X,Y,Z,AX,AY,AZ"));
+  cmd->add_option("--range", o->range,
+                  "the moving part's turn about the hinge, deg, from its pose in the file (two meshes; replaces a URDF "
+                  "joint's limits)")
+      ->type_name("MIN,MAX")
+      ->check(numbers(2, "two angles MIN,MAX in deg"));
+  cmd->add_option("--spring", o->spring,
+                  "the spring a URDF or a mesh lacks: its torsional stiffness about the hinge, N*m/rad, and the opening, "
+                  "deg, at which it pushes nothing (above theta_max it holds the tool open with a preload)")
+      ->type_name("K_N_M_PER_RAD,REST_DEG")
+      ->check(numbers(2, "K_N_M_PER_RAD,REST_DEG"));
+  cmd->add_option("--spring-at", o->spring_at,
+                  "where the spring sits on the arm, mm from the hinge (signed; default the middle of the handle)")
+      ->type_name("MM")
+      ->check(numbers(1, "a distance in mm"));
+  cmd->add_flag("--arm-dynamics", o->arm_dynamics,
+                "switch on the arm_inertia effect (the moving part's inertia about the hinge, written either way); "
+                "without it the lever is quasi-static, as the shipped tools are");
+  cmd->add_option("--rotation", o->rotation,
+                  "the functional pose's rotation, deg about world x, then y, then z, instead of the plane of symmetry "
+                  "upright")
+      ->type_name("RX,RY,RZ")
+      ->check(numbers(3, "three angles RX,RY,RZ in deg"));
+  cmd->add_option("--emphasis", o->emphasis, "the handle (where the hand pushes), mm along the arm, instead of found")
+      ->type_name("FROM,TO")
+      ->check(numbers(2, "FROM,TO in mm"));
+  cmd->add_option("--application", o->application,
+                  "the jaws (where the actee sits), mm along the arm, instead of found from the gap")
+      ->type_name("FROM,TO")
+      ->check(numbers(2, "FROM,TO in mm"));
   cmd->add_option("--links", o->links, "a URDF's fixed and moving links, where it has more than one revolute joint")
       ->type_name("FIXED,MOVING")
       ->check(CLI::Validator(

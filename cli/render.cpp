@@ -5,6 +5,7 @@
 // --guides draws the guides of FILE (default: guides.yaml beside the
 // session's function models, else the shipped rules/guides.yaml) in every
 // picture.
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -14,7 +15,9 @@
 #include "commands.h"
 #include "data_dir.h"
 #include "option_checks.h"
+#include "output_file.h"
 #include "progress.h"
+#include "scripted_agent.h"
 #include "derive.h"
 #include "guides.h"
 #include "session.h"
@@ -38,9 +41,12 @@ std::string default_guides(const CompiledSession& s) {
 
 struct RenderOptions {
   std::string file, guides_file, size;
-  bool guides = false, no_frames = false;
+  bool guides = false, no_frames = false, force = false;
   render::RenderSessionOptions o;
 };
+
+// A render of more frames than this says so before it starts.
+constexpr double kAnnouncedFrames = 1000;
 
 int render_command(RenderOptions ro) {
   render::RenderSessionOptions& o = ro.o;
@@ -50,8 +56,18 @@ int render_command(RenderOptions ro) {
   const CompiledSession session = load_session(file);  // DataError: file:line:col, exit 1
   if (o.out_dir.empty()) o.out_dir = "out/" + session.name + "/render";
   Guides computed;
+  if (ro.guides && guides_file.empty()) guides_file = default_guides(session);
+  std::vector<std::string> inputs = session.files;
+  if (ro.guides) inputs.push_back(guides_file);
+  const OutputScope scope({.writer = "render", .force = ro.force, .inputs = inputs});
+  for (const char* name : {"contact_sheet.png", "timeline.png", "timeline.svg"}) {
+    check_output((std::filesystem::path(o.out_dir) / name).string());  // refused now, not after the frames
+  }
+  const double frames = std::floor(ScriptedAgent(session.script).duration() * o.fps + 1e-9) + 1;
+  if (o.frames && frames > kAnnouncedFrames) {
+    std::fprintf(stderr, "render: %.0f frames of %dx%d to draw; progress on stderr\n", frames, o.width, o.height);
+  }
   if (ro.guides) {
-    if (guides_file.empty()) guides_file = default_guides(session);
     std::vector<ActeeFit> fits;
     if (session.model.has_actee) fits.push_back(fit_actee(session.model));
     computed = compute_guides(session.model, load_guides(guides_file), fits);
@@ -64,6 +80,7 @@ int render_command(RenderOptions ro) {
     o.progress = [&progress](int done, int total) { progress.update(done, total); };
     r = render::render_session(session, o);
   }
+  clear_stale_outputs(o.out_dir);  // what an earlier render wrote there and this one did not
   std::printf("session %s: %d frames at %g fps, %dx%d, in %s\n", session.name.c_str(), r.frames, o.fps, o.width,
               o.height, o.out_dir.c_str());
   std::printf("key moments (contact_sheet.png):\n");
@@ -96,6 +113,7 @@ void add_render(CLI::App& app, Run* run) {
       ->expected(0, 1)
       ->type_name(kFile);
   cmd->add_flag("--no-frames", r->no_frames, "write the contact sheet and the plots, not the frames");
+  cmd->add_flag("--force", r->force, "replace existing files in the folder that afford did not write");
   cmd->callback([run, r, cmd] {
     r->guides = cmd->count("--guides") > 0;
     r->o.frames = !r->no_frames;

@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "json_output.h"
 #include "option_checks.h"
+#include "output_file.h"
 #include "recording_source.h"
 #include "run.h"
 #include "session_outputs.h"
@@ -58,7 +59,7 @@ void check_events(const Recording& rec, const RuleSet& rules) {
 
 struct ReplayOptions {
   std::string file, rules_file, out_dir;
-  bool json = false;
+  bool json = false, force = false;
 };
 
 int replay(const ReplayOptions& o) {
@@ -66,6 +67,8 @@ int replay(const ReplayOptions& o) {
   const std::string& rules_file = o.rules_file;
   const std::string& out_dir = o.out_dir;
   const bool json = o.json;
+  // The recording is an input: never an output (engine/output_file.h).
+  const OutputScope scope({.writer = "replay", .force = o.force, .inputs = {file}});
   const Recording rec = read_recording(file);
   const CompiledSession session = load_recorded_session(rec);
   check_events(rec, *session.rules);
@@ -91,6 +94,7 @@ int replay(const ReplayOptions& o) {
     ReplayChecker checker(rec, true);
     const std::vector<Observer*> observers = with_outputs({&checker});
     const RunResult result = run_session(session, *session.rules, source, observers);
+    if (outputs) outputs->close();  // checked, and renamed into place
     if (json) {
       Json j = {{"recording", rec.file},
                 {"session", rec.session_name},
@@ -122,6 +126,7 @@ int replay(const ReplayOptions& o) {
   TimelineCollector rerun(rec.events.size() + 1024);
   const std::vector<Observer*> observers = with_outputs({&physics, &rerun});
   const RunResult result = run_session(session, *rules, source, observers);
+  if (outputs) outputs->close();
   std::vector<NamedEvent> recorded;
   recorded.reserve(rec.events.size());
   for (const Event& e : rec.events) recorded.push_back(name_event(*session.rules, e));
@@ -171,6 +176,7 @@ void add_replay(CLI::App& app, Run* run) {
       ->type_name(kFile);
   cmd->add_flag("--json", o->json, "print the result as JSON");
   cmd->add_option("--out", o->out_dir, "also write timeline.jsonl and trace.csv into DIR")->type_name(kDir);
+  cmd->add_flag("--force", o->force, "replace existing output files that afford did not write");
   cmd->callback([run, o] { *run = [o] { return replay(*o); }; });
 }
 

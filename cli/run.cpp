@@ -3,8 +3,11 @@
 // explanation, and writes the timeline (DIR/timeline.jsonl) and the trace
 // (DIR/trace.csv); DIR defaults to out/<session name>. With --watch it runs
 // again whenever a file the session uses changes. --record FILE also writes
-// a recording (devices/recording.h) for `afford replay`.
+// a recording (devices/recording.h) for `afford replay`. Outputs go through
+// engine/output_file.h: an existing file afford did not write, or one of the
+// session's own files, is not replaced (--force replaces the former).
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -15,6 +18,8 @@
 #include "option_checks.h"
 #include "closest_approach.h"
 #include "files.h"
+#include "output_file.h"
+#include "progress.h"
 #include "recording.h"
 #include "run.h"
 #include "scripted_agent.h"
@@ -61,11 +66,26 @@ void print_json(const CompiledSession& s, const RunResult& r) {
   std::cout << j.dump() << "\n";
 }
 
+// A run of more frames than this says so before it starts.
+constexpr std::int64_t kAnnouncedFrames = 1000000;
+
+// The frames a scripted session steps (run_session's count).
+std::int64_t scripted_frames(const CompiledSession& session) {
+  const double duration = ScriptedAgent(session.script).duration();
+  return static_cast<std::int64_t>(std::floor(duration / session.model.timestep + 1e-9));
+}
+
 // Runs a compiled session once: writes the timeline and the trace, prints
 // the verdicts.
-void run_once(const CompiledSession& session, const std::string& out_dir, bool json,
+void run_once(const CompiledSession& session, const std::string& out_dir, bool json, bool force,
               const std::string& record = {}) {
   for (const Warning& w : session.warnings) std::cerr << w.str() << "\n";  // it runs, but see why it may do nothing
+  const OutputScope scope({.writer = "run", .force = force, .inputs = session.files});
+  const std::int64_t frames = scripted_frames(session);
+  if (frames > kAnnouncedFrames) {
+    std::cerr << "run: " << frames << " frames of " << format_quantity(session.model.timestep, dim::time)
+              << " to simulate; progress below\n";
+  }
   RunResult result;
   std::vector<FunctionProgress> closest;  // each function's closest approach
   std::int64_t recorded = -1;
@@ -74,9 +94,10 @@ void run_once(const CompiledSession& session, const std::string& out_dir, bool j
     SessionOutputs outputs(output_dir(out_dir, session.name));
     written = outputs.written();
     ProgressObserver progress;
-    std::vector<Observer*> observers = {outputs.timeline(), outputs.trace(), &progress};
+    FrameProgress frame_progress(frames);
+    std::vector<Observer*> observers = {outputs.timeline(), outputs.trace(), &progress, &frame_progress};
     std::optional<Recorder> recorder;
-    if (!record.empty()) observers.push_back(&recorder.emplace(record, session, "script " + session.file));
+    if (!record.empty()) observers.push_back(&recorder.emplace(record, session, "script " + session.file, frames));
     ScriptedAgent agent(session.script);
     result = run_session(session, *session.rules, agent, observers);
     if (recorder && !recorder->error().empty()) throw std::runtime_error(recorder->error());
@@ -117,7 +138,7 @@ std::vector<Stamp> stamps(const std::vector<std::string>& files) {
 // --watch: re-runs whenever a file the session read changes. A broken edit
 // prints its error and keeps the last good model (run again once the file
 // is fixed). `runs` > 0 stops after that many runs or failed reloads.
-int watch(const std::string& file, const std::string& out_dir, bool json, long runs) {
+int watch(const std::string& file, const std::string& out_dir, bool json, bool force, long runs) {
   std::optional<CompiledSession> good;
   std::vector<std::string> files{file};
   long done = 0;
@@ -130,7 +151,7 @@ int watch(const std::string& file, const std::string& out_dir, bool json, long r
         files = session.files;
         before = stamps(files);  // first run, or the session now names other files
       }
-      run_once(session, out_dir, json);
+      run_once(session, out_dir, json, force);
       good = std::move(session);
     } catch (const DataError& e) {
       std::cout << e.what() << "\n";
@@ -147,13 +168,13 @@ int watch(const std::string& file, const std::string& out_dir, bool json, long r
 
 struct RunOptions {
   std::string file, out_dir, record;
-  bool json = false, watch = false;
+  bool json = false, watch = false, force = false;
   long runs = 0;
 };
 
 int run_command(const RunOptions& o) {
-  if (o.watch) return watch(o.file, o.out_dir, o.json, o.runs);
-  run_once(load_session(o.file), o.out_dir, o.json, o.record);  // DataError: file:line:col, exit 1
+  if (o.watch) return watch(o.file, o.out_dir, o.json, o.force, o.runs);
+  run_once(load_session(o.file), o.out_dir, o.json, o.force, o.record);  // DataError: file:line:col, exit 1
   return 0;
 }
 
@@ -175,6 +196,7 @@ void add_run(CLI::App& app, Run* run) {
   cmd->add_option("--record", o->record, "also write a recording to FILE, for afford replay")
       ->type_name(kFile)
       ->excludes(watch);
+  cmd->add_flag("--force", o->force, "replace existing output files that afford did not write");
   cmd->callback([run, o] { *run = [o] { return run_command(*o); }; });
 }
 

@@ -20,6 +20,7 @@
 #include "commands.h"
 #include "data_dir.h"
 #include "option_checks.h"
+#include "output_file.h"
 #include "server.h"
 #include "trial.h"
 
@@ -44,6 +45,8 @@ int serve_session(ServeCliOptions o) {
                  s.bind.c_str());
   }
   if (s.bind == "localhost") s.bind = "127.0.0.1";
+  // Trials go through engine/output_file.h: never over the session, nor over files afford did not write.
+  const OutputScope scope({.writer = "serve", .force = false, .inputs = {s.session_file}});
   serve::Server server(s);  // DataError: file:line:col
   server.start();
   std::printf("serving %s at %s (participant %s, trials in %s); Ctrl-C ends\n", s.session_file.c_str(),
@@ -87,6 +90,18 @@ int serve_session(ServeCliOptions o) {
   return status;
 }
 
+CLI::Validator participant_id() {
+  return CLI::Validator(
+      [](std::string& value) {
+        return serve::valid_participant(value)
+                   ? std::string()
+                   : "expected 1 to 32 letters, digits, '-' and '_', found '" + value + "'";
+      },
+      "");
+}
+
+}  // namespace
+
 CLI::Validator port_number() {
   return CLI::Validator(
       [](std::string& value) {
@@ -107,18 +122,6 @@ CLI::Validator ipv4_address() {
       },
       "");
 }
-
-CLI::Validator participant_id() {
-  return CLI::Validator(
-      [](std::string& value) {
-        return serve::valid_participant(value)
-                   ? std::string()
-                   : "expected 1 to 32 letters, digits, '-' and '_', found '" + value + "'";
-      },
-      "");
-}
-
-}  // namespace
 
 void add_serve(CLI::App& app, Run* run) {
   CLI::App* cmd = app.add_subcommand(

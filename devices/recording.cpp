@@ -6,6 +6,8 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 #include <unistd.h>
@@ -108,8 +110,31 @@ std::vector<RecordedFile> collect_session_files(const std::vector<std::string>& 
   return out;
 }
 
-Recorder::Recorder(const std::string& path, const CompiledSession& session, const std::string& source)
-    : path_(path) {
+namespace {
+
+// Whether the file at path begins as a recording does: afford's own.
+bool is_recording(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return false;
+  unsigned char magic[kRecordingMagic.size()];
+  struct stat st {};
+  const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+  const bool read = regular && ::read(fd, magic, sizeof magic) == static_cast<ssize_t>(sizeof magic);
+  ::close(fd);
+  return read && std::memcmp(magic, kRecordingMagic.data(), sizeof magic) == 0;
+}
+
+std::string mib(std::uint64_t bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f MiB", static_cast<double>(bytes) / (1 << 20));
+  return buf;
+}
+
+}  // namespace
+
+Recorder::Recorder(const std::string& path, const CompiledSession& session, const std::string& source,
+                   std::int64_t expected_frames, std::uint64_t max_bytes)
+    : path_(path), max_bytes_(max_bytes) {
   std::string root;
   const std::vector<RecordedFile> files = collect_session_files(session.files, &root);
 
@@ -136,8 +161,22 @@ Recorder::Recorder(const std::string& path, const CompiledSession& session, cons
   h.patch_u32(record, static_cast<std::uint32_t>(payload));
   h.u32(crc32(h.data() + record, h.size() - record));
 
-  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  // Refused before anything is written when even event-free frames would
+  // not fit: replay could not read the file.
+  const std::uint64_t least = h.size() + static_cast<std::uint64_t>(std::max<std::int64_t>(expected_frames, 0)) *
+                                             kMinFrameRecordBytes + kRecordOverhead + kEndPayload;
+  if (least > max_bytes_) {
+    char step[32];
+    std::snprintf(step, sizeof step, "%g ms", session.model.timestep * 1e3);
+    throw std::runtime_error(path + ": cannot record " + std::to_string(expected_frames) + " frames of " + step +
+                             ": at least " + mib(least) +
+                             " (" + std::to_string(kMinFrameRecordBytes) + " bytes a frame), over the " +
+                             mib(max_bytes_) + " a recording may hold (replay reads no more); record a shorter "
+                             "session or a longer timestep");
+  }
+
+  out_ = std::make_unique<OutputFile>(path, OutputFile::Options{.in_place_when_new = true, .own = is_recording(path)});
+  fd_ = out_->release_fd();
   if (const int e = write_all(fd_, h.data(), h.size())) {
     ::close(fd_);
     fd_ = -1;
@@ -152,16 +191,28 @@ Recorder::~Recorder() {
   if (fd_ >= 0) ::close(fd_);
 }
 
+void Recorder::stop(const std::string& why) {
+  error_ = why;
+  ::close(fd_);
+  fd_ = -1;
+}
+
 void Recorder::write_record(size_t payload_bytes) {
   if (fd_ < 0) return;
   unsigned char* b = buffer_.data();
-  put_u32(b, static_cast<std::uint32_t>(payload_bytes));
   const size_t crc_at = 5 + payload_bytes;
+  // The end record always fits: a recording stopped here still reads whole.
+  const std::uint64_t room = b[4] == kRecordEnd ? 0 : kRecordOverhead + kEndPayload;
+  if (bytes_ + crc_at + 4 + room > max_bytes_) {
+    stop(path_ + ": stopped recording after " + std::to_string(frames_) + " frames (" + std::to_string(bytes_) +
+         " bytes): the next record would take it past " + std::to_string(max_bytes_) +
+         " bytes, the most a recording may hold (replay reads no more)");
+    return;
+  }
+  put_u32(b, static_cast<std::uint32_t>(payload_bytes));
   put_u32(b + crc_at, crc32(b, crc_at));
   if (const int e = write_all(fd_, b, crc_at + 4)) {
-    error_ = "cannot write " + path_ + " after " + std::to_string(frames_) + " frames: " + std::strerror(e);
-    ::close(fd_);
-    fd_ = -1;
+    stop("cannot write " + path_ + " after " + std::to_string(frames_) + " frames: " + std::strerror(e));
     return;
   }
   bytes_ += crc_at + 4;
@@ -221,6 +272,11 @@ void Recorder::on_end(const Model&, const State& s, const RuleSet&, const RuleSt
     ::fdatasync(fd_);  // a clean end is on the disk, not only in the kernel
     ::close(fd_);
     fd_ = -1;
+    try {
+      out_->commit();  // an earlier recording is replaced only now
+    } catch (const std::exception& e) {
+      error_ = e.what();
+    }
   }
 }
 

@@ -58,11 +58,13 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "observer.h"
+#include "output_file.h"
 #include "session.h"
 
 namespace afford {
@@ -75,6 +77,12 @@ enum RecordType : std::uint8_t {
   kRecordFrame = 'F',
   kRecordEnd = 'E',
 };
+
+// The largest recording, bytes: one limit for the writer and the reader.
+// The recorder refuses a session whose frames alone would pass it and
+// stops, with an error, before its next record would; `afford replay`
+// reads any file up to it.
+inline constexpr std::uint64_t kMaxRecordingBytes = std::uint64_t{1} << 30;
 
 // Fixed sizes, bytes.
 inline constexpr size_t kRecordOverhead = 4 + 1 + 4;        // length, type, crc
@@ -129,18 +137,30 @@ inline std::uint64_t get_u64(const unsigned char* p) {
 inline std::int64_t get_i64(const unsigned char* p) { return static_cast<std::int64_t>(get_u64(p)); }
 inline double get_f64(const unsigned char* p) { return std::bit_cast<double>(get_u64(p)); }
 
-// Writes a recording. The constructor creates (truncates) the file and
-// writes the header; each frame is one write() from a buffer allocated
-// here, so that the frame is in the kernel when on_frame returns. A failed
-// write does not throw in on_frame: the recorder stops writing and error()
-// says why. Not copyable.
+// The least bytes a frame takes on disk (a frame without events).
+inline constexpr std::uint64_t kMinFrameRecordBytes = kRecordOverhead + kFrameFixedPayload;
+
+// Writes a recording (an OutputFile, engine/output_file.h). A new file is
+// written in place, so that a crash leaves what was recorded at its name;
+// an earlier recording (recognised by its magic number), or another file
+// with --force, is replaced by rename only when the session ends cleanly.
+// The constructor writes the header; each frame is one write() from a
+// buffer allocated here, so that the frame is in the kernel when on_frame
+// returns. A failed write, or a frame that would take the file past
+// max_bytes (room for the end record kept), does not throw in on_frame:
+// the recorder stops writing and error() says why. Not copyable.
 class Recorder : public Observer {
  public:
   // session: its files (session.files, the session first) are embedded;
   // source: what produced the samples, e.g. "script sessions/x.yaml".
-  // Throws std::runtime_error when the file cannot be created or a model
-  // file cannot be read.
-  Recorder(const std::string& path, const CompiledSession& session, const std::string& source);
+  // expected_frames: how many frames the session will run (0: unknown);
+  // when even frames without events would pass max_bytes the recording is
+  // refused before it starts. Throws std::runtime_error when the file
+  // cannot be created, a model file cannot be read or the session is too
+  // long to record; OutputRefused (output_file.h) for a target it may not
+  // replace.
+  Recorder(const std::string& path, const CompiledSession& session, const std::string& source,
+           std::int64_t expected_frames = 0, std::uint64_t max_bytes = kMaxRecordingBytes);
   ~Recorder() override;
   Recorder(const Recorder&) = delete;
   Recorder& operator=(const Recorder&) = delete;
@@ -163,8 +183,11 @@ class Recorder : public Observer {
 
  private:
   void write_record(size_t payload_bytes);  // buffer_: type and payload filled in
+  void stop(const std::string& why);         // closes the file; error() = why
   std::string path_;
+  std::unique_ptr<OutputFile> out_;  // renamed into place at on_end
   int fd_ = -1;
+  std::uint64_t max_bytes_;
   std::vector<unsigned char> buffer_;  // one record, sized for the largest frame
   std::int64_t frames_ = 0;
   std::uint64_t bytes_ = 0;

@@ -216,7 +216,14 @@ bool safe_path(const std::string& p) {
 std::string Recording::summary() const {
   std::string s = std::to_string(frames.size()) + (frames.size() == 1 ? " frame" : " frames");
   switch (tail) {
-    case RecordingTail::end: return s + ", ended cleanly";
+    case RecordingTail::end:
+      // Bytes appended after the end (a second recording written onto the
+      // first, a copy gone wrong) are not read: say so.
+      if (file_bytes > good_bytes) {
+        return s + ", ended cleanly; " + std::to_string(file_bytes - good_bytes) +
+               " bytes after its end record are ignored";
+      }
+      return s + ", ended cleanly";
     case RecordingTail::no_end: return s + "; the session did not end cleanly (no end record)";
     case RecordingTail::incomplete: return s + "; the last record was incomplete (" + tail_detail + ")";
     case RecordingTail::corrupt: return s + "; " + tail_detail + ": the rest of the file is ignored";

@@ -50,7 +50,8 @@ struct Recording {
   std::uint64_t good_bytes = 0;       // up to the end of the last good record
   std::int64_t skipped_records = 0;   // of types this reader does not know
 
-  // "4000 frames, ended cleanly", "1234 frames; the last record was
+  // "4000 frames, ended cleanly", "4000 frames, ended cleanly; 12 bytes
+  // after its end record are ignored", "1234 frames; the last record was
   // incomplete", "1234 frames; record 1236 is corrupt (...): the rest is ignored".
   std::string summary() const;
 };
@@ -61,9 +62,9 @@ struct Recording {
 // whose header is incomplete or corrupt is an error naming the file
 // (std::runtime_error).
 // Only a regular file of at most kMaxRecordingBytes is read (a DataError at
-// path:0:0 otherwise).
+// the path otherwise).
+// (kMaxRecordingBytes is in recording.h: the recorder stops before it.)
 Recording read_recording(const std::string& path);
-inline constexpr size_t kMaxRecordingBytes = size_t{1} << 30;
 Recording parse_recording(std::string_view bytes, const std::string& name);
 
 // Loads the recorded session from the recorded copies of its files, not

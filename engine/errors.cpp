@@ -3,6 +3,7 @@
 namespace afford {
 
 std::string SourceLoc::str() const {
+  if (line <= 0) return file;  // the file as a whole: no line to point at
   return file + ":" + std::to_string(line) + ":" + std::to_string(column);
 }
 

@@ -8,12 +8,13 @@
 
 namespace afford {
 
-// Where a value came from: 1-based line and column, as editors count.
+// Where a value came from: 1-based line and column, as editors count;
+// line 0 for the file as a whole (missing, too large, not a regular file).
 struct SourceLoc {
   std::string file;
   int line = 0;
   int column = 0;
-  std::string str() const;  // "file:line:col"
+  std::string str() const;  // "file:line:col", or "file" when line is 0
 };
 
 class DataError : public std::runtime_error {

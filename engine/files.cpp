@@ -1,11 +1,14 @@
 #include "files.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+
+#include "output_file.h"
 
 namespace afford {
 namespace {
@@ -22,7 +25,11 @@ std::string kind_of(mode_t mode) {
 std::string read_regular_file(const std::string& path, size_t max_bytes) {
   const SourceLoc at{path, 0, 0};
   struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) fail(at, "a readable file", "none");
+  if (::stat(path.c_str(), &st) != 0) {
+    if (errno == ELOOP) fail(at, "a readable file", "a loop of symbolic links");
+    if (errno == ENOENT) fail(at, "a readable file", "none");
+    fail(at, "a readable file", std::strerror(errno));
+  }
   if (S_ISDIR(st.st_mode)) fail(at, "a readable file", "a directory");
   // Checked before opening: opening a FIFO blocks, a device never ends.
   if (!S_ISREG(st.st_mode)) fail(at, "a regular file", kind_of(st.st_mode));
@@ -53,7 +60,11 @@ void check_written(bool ok, const std::string& path) {
   throw WriteError("cannot write " + path + ": " + (e ? std::strerror(e) : "write failed"));
 }
 
-CheckedFile::CheckedFile(const std::string& path) : file(std::fopen(path.c_str(), "w")), path_(path) {
+CheckedFile::CheckedFile(const std::string& path) : file(nullptr), path_(path) {
+  output_ = std::make_unique<OutputFile>(path);
+  const int fd = output_->release_fd();
+  file = ::fdopen(fd, "w");
+  if (file == nullptr) ::close(fd);
   check_written(file != nullptr, path_);
   // Traces are hundreds of kilobytes: written in pieces of 64 KiB, not of
   // the default 4 KiB, they take a sixteenth of the system calls. (glibc
@@ -75,17 +86,21 @@ void CheckedFile::close() {
   file = nullptr;
   if (!flushed) errno = flush_errno;
   check_written(flushed && closed, path_);
+  output_->commit();  // renamed into place only once whole
 }
 
 void write_file_checked(const std::string& path, const std::string& text) {
-  errno = 0;
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  check_written(static_cast<bool>(out), path);
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.flush();
-  check_written(static_cast<bool>(out), path);
-  out.close();
-  check_written(!out.fail(), path);
+  OutputFile out(path);
+  const char* p = text.data();
+  size_t left = text.size();
+  while (left > 0) {
+    const ssize_t w = ::write(out.fd(), p, left);
+    if (w < 0 && errno == EINTR) continue;
+    check_written(w > 0, path);
+    p += w;
+    left -= static_cast<size_t>(w);
+  }
+  out.commit();
 }
 
 }  // namespace afford

@@ -14,8 +14,8 @@
 
 namespace afford {
 
-// The whole of a regular file of at most max_bytes; a DataError at path:0:0
-// otherwise (missing, a directory, a FIFO or device, too large, unreadable).
+// The whole of a regular file of at most max_bytes; a DataError naming the
+// file otherwise (missing, a directory, a FIFO or device, too large, unreadable).
 std::string read_regular_file(const std::string& path, size_t max_bytes);
 
 // A failed write: the path and the reason (strerror), for the command line
@@ -30,9 +30,13 @@ class WriteError : public std::runtime_error {
 // and flush; errno names the reason.
 void check_written(bool ok, const std::string& path);
 
-// A C file opened for writing; close() checks every buffered write and the
-// close itself and throws WriteError naming the path and the reason. The
-// destructor closes without checking (an exception is already on its way).
+class OutputFile;  // output_file.h
+
+// A C file opened for writing (an OutputFile: a temporary file beside the
+// target); close() checks every buffered write and the close itself, throws
+// WriteError naming the path and the reason, and renames the file into
+// place. The destructor closes without checking (an exception is already on
+// its way) and removes the unfinished file: the earlier one stays.
 class CheckedFile {
  public:
   explicit CheckedFile(const std::string& path);
@@ -44,10 +48,12 @@ class CheckedFile {
 
  private:
   std::string path_;
+  std::unique_ptr<OutputFile> output_;
   std::unique_ptr<char[]> buffer_;  // the file's buffer: freed after the file is closed
 };
 
-// Writes `text` to `path` (replacing it), checked to the last byte.
+// Writes `text` to `path` (an OutputFile: replacing it only as
+// output_file.h allows), checked to the last byte.
 void write_file_checked(const std::string& path, const std::string& text);
 
 }  // namespace afford

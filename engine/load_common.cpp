@@ -17,7 +17,11 @@ Eigen::Matrix3d rotation_xyz(const Eigen::Vector3d& angles_rad) {
 
 Eigen::Vector3d read_positive_vector(const Node& node, const Dimension& d) {
   const Eigen::Vector3d v = read_vector(node, d);
-  for (int i = 0; i < 3; ++i) require_positive(node[static_cast<size_t>(i)], v[i]);
+  for (int i = 0; i < 3; ++i) {
+    // Each size as a sphere's radius: above 0 and at least the smallest length (1 um).
+    require_positive(node[static_cast<size_t>(i)], v[i]);
+    require_at_least_smallest(node[static_cast<size_t>(i)], d, v[i]);
+  }
   return v;
 }
 

@@ -249,6 +249,12 @@ ObjectSpec read_object(const Node& root) {
   }
   const Node lever = m.required("lever");
   o.lever = read_lever(lever);
+  // A tool modelled from a mesh or a URDF has no spring until one is given.
+  if (!m.has("spring")) {
+    root.fail("key 'spring' in an object file (a tool modelled from a mesh or a URDF has none)",
+              "none: give it with afford model ... --spring K_N_M_PER_RAD,REST_DEG, or write a guess and fit it to a "
+              "probing trace with afford gap --probe");
+  }
   o.spring = read_spring(m.required("spring"), o.lever);
   const Node emphasis = m.required("emphasis");
   o.emphasis = read_range(emphasis, "the emphasis region");

@@ -121,7 +121,7 @@ CompiledSession read_session(const Node& root) {
   options.contact_tolerance = kDefaultContactTolerance;
   if (std::optional<Node> dt = m.optional("timestep")) {
     options.timestep = read_positive(*dt, dim::time);
-    if (options.timestep > kMaxTimestep || options.timestep < kMinTimestep) {
+    if (!at_most(options.timestep, kMaxTimestep) || !at_least(options.timestep, kMinTimestep)) {  // 10 us passes
       dt->fail("a timestep from " + format_quantity(kMinTimestep, dim::time) + " to " +
                format_quantity(kMaxTimestep, dim::time));
     }

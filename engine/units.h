@@ -40,6 +40,14 @@ inline constexpr Dimension speed{{1, 0, -1, 0}};             // m/s
 inline constexpr Dimension angular_speed{{0, 0, -1, 1}};     // rad/s
 }  // namespace dim
 
+// Limits compared with a relative tolerance, so that a documented limit
+// written in any unit passes exactly: "10 us" is 10 x 1e-6 s, which is a
+// hair below 1e-5 s in floating point. 1e-9 is far below any difference
+// a limit means.
+inline constexpr double kLimitTolerance = 1e-9;
+inline bool at_least(double value, double least) { return value >= least * (1 - kLimitTolerance); }
+inline bool at_most(double value, double most) { return value <= most * (1 + kLimitTolerance); }
+
 // A human name and an example for error messages: "a length (e.g. '18 mm')".
 std::string describe_dimension(const Dimension& d);
 

@@ -350,7 +350,7 @@ double read_quantity(const Node& node, const Dimension& expected) {
     node.fail(describe_dimension(expected), "'" + node.yaml().Scalar() + "', " + found_dim);
   }
   if (!std::isfinite(q->si)) node.fail("a finite value");
-  if (const Bounds* b = bounds_of(expected); b && std::abs(q->si) > b->largest) {
+  if (const Bounds* b = bounds_of(expected); b && !at_most(std::abs(q->si), b->largest)) {
     node.fail(describe_dimension(expected) + " of at most " + format_quantity(b->largest, expected) + " in size" + kWhy);
   }
   return q->si;
@@ -386,7 +386,7 @@ double require_positive(const Node& node, double value) {
 }
 
 double require_at_least_smallest(const Node& node, const Dimension& expected, double value) {
-  if (const Bounds* b = bounds_of(expected); b && value > 0 && value < b->smallest) {
+  if (const Bounds* b = bounds_of(expected); b && value > 0 && !at_least(value, b->smallest)) {
     node.fail(describe_dimension(expected) + " of at least " + format_quantity(b->smallest, expected) + kWhy);
   }
   return value;

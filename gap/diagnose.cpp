@@ -1,4 +1,5 @@
 #include "diagnose.h"
+#include "sensor_gain.h"
 
 #include <algorithm>
 #include <cmath>
@@ -546,6 +547,55 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       ambiguous = true;
     }
   }
+  // Before naming, too: could a force sensor's gain error (outside the
+  // library) explain the gap as well? Judged as a runner-up is judged: it
+  // cuts the held-out error where the chosen set acts nearly as far, and
+  // the held-out samples there do not tell it from the chosen set. Then
+  // nothing the library holds is named.
+  bool gain_alike = false;
+  if (!chosen.empty()) {
+    std::vector<std::vector<double>> nominal_residual;
+    for (size_t i = 0; i < replays.size(); ++i) nominal_residual.push_back(fitter.residual(nominal, i));
+    const GainFit gain = held_out_gain(replays, nominal_residual, judged);
+    const bool contact = contact_samples > 0 && std::any_of(chosen.begin(), chosen.end(), [](EffectKind k) {
+                           return manifest_of(k).home == EffectHome::actee;
+                         });
+    auto where = [&](const std::vector<double>& sq) {
+      if (!contact) return sq;
+      std::vector<double> out;
+      for (size_t j = 0; j < sq.size(); ++j) {
+        if (judged_in_contact[j]) out.push_back(sq[j]);
+      }
+      return out;
+    };
+    // Where the chosen set is judged (the contact, for an actee's law),
+    // and, since a gain scales every reading, over every sample too.
+    auto alike_in = [&](bool in_contact) {
+      std::vector<double> gain_sq = gain.sq, set_sq = current_scored.sq;
+      if (in_contact) {
+        gain_sq = where(gain.sq);
+        set_sq = where(current_scored.sq);
+      }
+      double gain_sum = 0;
+      for (double v : gain_sq) gain_sum += v;
+      const double gain_mean = in_contact ? gain_sum / static_cast<double>(contact_samples)
+                                          : (gain.weights > 0 ? gain_sum / gain.weights : 0.0);
+      auto mean_sq = [&](const Scored& f) {
+        return in_contact ? f.rmse_contact * f.rmse_contact : f.fit.rmse_test * f.fit.rmse_test;
+      };
+      const double was = mean_sq(nominal_scored);
+      const double cut = was - mean_sq(current_scored);
+      return cut > 0 && was - gain_mean >= kNearlyAsFar * cut && paired_t(set_sq, gain_sq) < kSeparated;
+    };
+    gain_alike = alike_in(false) && (!contact || alike_in(true));
+    if (gain_alike) {
+      d.gain_alike = gain.gain;
+      std::snprintf(line, sizeof line,
+                    "  the data cannot tell %s from a force sensor reading %+.3g %% (a gain error, outside the library): ",
+                    effects_text(chosen).c_str(), 100 * gain.gain);
+      d.steps.push_back(line + std::string("weigh a known force at the effort, or drive it where they differ"));
+    }
+  }
   d.effects = current.effects;
   d.noise_through_model = floor_of(current);
   d.rmse_after = current.rmse_test;
@@ -567,7 +617,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
 
   if (nominal_matched) {
     d.verdict = Verdict::none;
-  } else if (chosen.empty() || !(effects_match(current_scored) || d.residual.white)) {
+  } else if (chosen.empty() || gain_alike || !(effects_match(current_scored) || d.residual.white)) {
     d.verdict = Verdict::unexplained;
   } else {
     d.verdict = ambiguous ? Verdict::ambiguous : Verdict::explained;

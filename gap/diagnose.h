@@ -4,6 +4,7 @@
 // the fit never saw, and whether what is left has structure.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,10 @@ struct Diagnosis {
   std::vector<EffectFit> effects;                  // the effects adopted
   std::vector<std::vector<EffectKind>> ambiguous;  // sets that fit as well, when ambiguous
   std::vector<LookAlike> look_alikes;              // what the data cannot tell the named effects from
+  // The force sensor's gain error (outside the library) that explains the
+  // gap as well as the effects fitted, which are then not named: the
+  // relative error of its reading (+0.06: 6 % high); NaN when told apart.
+  double gain_alike = std::numeric_limits<double>::quiet_NaN();
   double noise = 0;                                // N, the measurement's own noise, estimated
   double noise_through_model = 0;                  // N, with the motion's noise through the adopted model
   double rmse_before = 0, rmse_after = 0;          // N, on the held-out traces

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "files.h"
 #include "report.h"
 #include "units.h"
 
@@ -46,12 +47,10 @@ YAML::Node patched(const std::string& file, const std::vector<EffectFit>& fits, 
 std::string write(const fs::path& path, const YAML::Node& root, const std::string& from) {
   YAML::Emitter out;
   out << root;
-  std::ofstream file(path);
-  file << "# Written by afford gap from " << from
-       << ": the fitted effects switched on, each parameter its total (the nominal's value plus the fitted change).\n"
-       << out.c_str() << "\n";
-  file.close();
-  if (!file) throw std::runtime_error("cannot write " + path.string());
+  // Through engine/output_file.h: never over an input or a file afford did not write.
+  write_file_checked(path.string(), "# Written by afford gap from " + from +
+                                        ": the fitted effects switched on, each parameter its total (the nominal's "
+                                        "value plus the fitted change).\n" + out.c_str() + "\n");
   return path.string();
 }
 

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 
+#include "files.h"
 #include "derivatives.h"
 #include "replay.h"
 #include "units.h"
@@ -409,12 +410,10 @@ void write_probed_object(const ProbeResult& p, const std::string& path) {
   }
   YAML::Emitter out;
   out << root;
-  std::ofstream file(path);
-  file << "# Written by afford gap --probe from " << p.object_file
-       << ": lever limits, rest, spring and friction as probed where seen, the file's elsewhere.\n"
-       << out.c_str() << "\n";
-  file.close();
-  if (!file) throw std::runtime_error("cannot write " + path);
+  // Through engine/output_file.h: never over an input or a file afford did not write.
+  write_file_checked(path, "# Written by afford gap --probe from " + p.object_file +
+                               ": lever limits, rest, spring and friction as probed where seen, the file's "
+                               "elsewhere.\n" + out.c_str() + "\n");
 }
 
 }  // namespace afford

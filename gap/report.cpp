@@ -327,6 +327,7 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
   }
   j["events"] = events;
   j["by_force"] = by_force;
+  j["gain_alike"] = std::isnan(d.gain_alike) ? nlohmann::json(nullptr) : nlohmann::json(d.gain_alike);
   j["folds"] = d.folds;
   j["fold_sizes"] = nlohmann::json::array();
   for (const FoldSize& f : d.fold_sizes) j["fold_sizes"].push_back({{"blocks", f.blocks}, {"fitted", f.fitted}});

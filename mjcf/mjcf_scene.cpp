@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "grasps.h"
 #include "stages.h"
@@ -385,6 +386,15 @@ std::string mjcf_scene(const CompiledSession& session) {
     << "  </keyframe>\n"
     << "</mujoco>\n";
   return x.str();
+}
+
+std::string export_mjcf(const CompiledSession& session) {
+  if (!session.actee_models.empty()) {
+    throw std::runtime_error(session.file + ": export --mjcf takes a session with one actee; this one lists " +
+                             std::to_string(session.actee_models.size()) +
+                             " ('actees:'): export a session with each alone");
+  }
+  return mjcf_scene(session);
 }
 
 }  // namespace afford

@@ -59,4 +59,10 @@ int substeps_per_frame(const Model& m);
 // agent (every session has).
 std::string mjcf_scene(const CompiledSession& session);
 
+// `afford export --mjcf` as a library call (the Python package's
+// export_mjcf): mjcf_scene() of a session with one actee or none; a session
+// with several (`actees:`) throws std::runtime_error naming its file, since
+// a scene holds the bodies of one moment.
+std::string export_mjcf(const CompiledSession& session);
+
 }  // namespace afford

@@ -70,6 +70,14 @@ TriangleMesh cylinder_mesh(double radius, double length, int slices) {
   return m;
 }
 
+TriangleMesh capsule_mesh(double radius, double length, int rings, int slices) {
+  // The northern half lifted and the southern lowered by half the length:
+  // the band across the equator becomes the cylinder.
+  TriangleMesh m = sphere_mesh(radius, rings | 1, slices);
+  for (Vector3d& v : m.vertices) v.z() += v.z() > 0 ? 0.5 * length : -0.5 * length;
+  return m;
+}
+
 void append(TriangleMesh& a, const TriangleMesh& b, const Eigen::Isometry3d& pose) {
   const int offset = static_cast<int>(a.vertices.size());
   for (const Vector3d& v : b.vertices) a.vertices.push_back(pose * v);

@@ -11,6 +11,9 @@ TriangleMesh box_mesh(const Eigen::Vector3d& size);                  // m
 TriangleMesh ellipsoid_mesh(const Eigen::Vector3d& radii, int rings, int slices);  // m
 TriangleMesh sphere_mesh(double radius, int rings = 24, int slices = 48);  // m
 TriangleMesh cylinder_mesh(double radius, double length, int slices = 48);  // m, along z
+// A cylinder of `length` along z capped by half spheres: a sphere of an
+// odd number of rings (no ring on the equator) pulled apart at the equator.
+TriangleMesh capsule_mesh(double radius, double length, int rings = 25, int slices = 48);  // m
 
 // `b` appended to `a`, its vertices moved by `pose` first.
 void append(TriangleMesh& a, const TriangleMesh& b, const Eigen::Isometry3d& pose);

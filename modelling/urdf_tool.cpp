@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -116,23 +117,55 @@ TriangleMesh geometry_mesh(const UrdfText& urdf, const std::string& link, const 
   fail(urdf.at("link", link), "a box, sphere, cylinder or mesh in link '" + link + "'", "another geometry");
 }
 
+// One element's geometry, placed, added to the link's mesh and kept as a
+// piece of its own.
+void add_element(const UrdfText& urdf, const std::string& link, const std::string& name, const urdf::Geometry& g,
+                 const Isometry3d& pose, TriangleMesh& out, std::vector<NamedMesh>& pieces) {
+  NamedMesh piece{name, {}};
+  piece.mesh.file = urdf.path;
+  append(piece.mesh, geometry_mesh(urdf, link, g), pose);
+  append(out, piece.mesh, Isometry3d::Identity());
+  pieces.push_back(std::move(piece));
+}
+
 // The link's collision geometry (its visual where it has none), in the
 // frame `pose` puts the link in.
-void add_link(const UrdfText& urdf, const urdf::Link& link, const Isometry3d& pose, TriangleMesh& out) {
+void add_link(const UrdfText& urdf, const urdf::Link& link, const Isometry3d& pose, TriangleMesh& out,
+              std::vector<NamedMesh>& pieces) {
   bool any = false;
   for (const auto& c : link.collision_array) {
     if (!c || !c->geometry) continue;
-    append(out, geometry_mesh(urdf, link.name, *c->geometry), pose * pose_of(c->origin));
+    add_element(urdf, link.name, c->name, *c->geometry, pose * pose_of(c->origin), out, pieces);
     any = true;
   }
   if (!any) {
     for (const auto& v : link.visual_array) {
       if (!v || !v->geometry) continue;
-      append(out, geometry_mesh(urdf, link.name, *v->geometry), pose * pose_of(v->origin));
+      add_element(urdf, link.name, v->name, *v->geometry, pose * pose_of(v->origin), out, pieces);
       any = true;
     }
   }
   if (!any) fail(urdf.at("link", link.name), "collision or visual geometry in link '" + link.name + "'", "none");
+}
+
+// The link's <inertial> in the frame `pose` puts the link in; a mass that
+// is not positive or an inertia that is not finite is an error at the link.
+LinkInertial inertial_of(const UrdfText& urdf, const urdf::Link& link, const Isometry3d& pose) {
+  LinkInertial out;
+  if (!link.inertial) return out;
+  const urdf::Inertial& i = *link.inertial;
+  Eigen::Matrix3d tensor;
+  tensor << i.ixx, i.ixy, i.ixz, i.ixy, i.iyy, i.iyz, i.ixz, i.iyz, i.izz;
+  if (!(i.mass > 0) || !std::isfinite(i.mass) || !tensor.allFinite()) {
+    fail(urdf.at("link", link.name), "a positive mass and a finite inertia in the <inertial> of link '" + link.name + "'",
+         "mass " + std::to_string(i.mass));
+  }
+  const Isometry3d at = pose * pose_of(i.origin);
+  out.given = true;
+  out.mass = i.mass;
+  out.centre = at.translation();
+  out.inertia = at.linear() * tensor * at.linear().transpose();
+  return out;
 }
 
 // Each link's frame in the root link's, every joint at zero.
@@ -214,8 +247,19 @@ UrdfTool read_urdf_tool(const std::string& path, const std::string& fixed, const
   tool.hinge_point = joint_frame.translation();
   tool.hinge_axis = (joint_frame.linear() * axis).normalized();
   tool.fixed.file = tool.moving.file = path;
-  add_link(urdf, *model->getLink(tool.fixed_link), Isometry3d::Identity(), tool.fixed);
-  add_link(urdf, *model->getLink(tool.moving_link), to_fixed * frames.at(tool.moving_link), tool.moving);
+  const Isometry3d moving_pose = to_fixed * frames.at(tool.moving_link);
+  add_link(urdf, *model->getLink(tool.fixed_link), Isometry3d::Identity(), tool.fixed, tool.fixed_pieces);
+  add_link(urdf, *model->getLink(tool.moving_link), moving_pose, tool.moving, tool.moving_pieces);
+  tool.fixed_inertial = inertial_of(urdf, *model->getLink(tool.fixed_link), Isometry3d::Identity());
+  tool.moving_inertial = inertial_of(urdf, *model->getLink(tool.moving_link), moving_pose);
+  if (joint->dynamics) {
+    tool.friction = joint->dynamics->friction;
+    tool.damping = joint->dynamics->damping;
+    if (!(tool.friction >= 0) || !(tool.damping >= 0)) {
+      fail(urdf.at("joint", joint->name), "a friction and a damping of 0 or more in the <dynamics> of joint '" + joint->name + "'",
+           std::to_string(tool.friction) + " and " + std::to_string(tool.damping));
+    }
+  }
   return tool;
 }
 

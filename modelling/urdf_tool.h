@@ -8,10 +8,26 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 #include "triangle_mesh.h"
 
 namespace afford::modelling {
+
+// One collision (or visual) element of a link: its name ("" where it has
+// none) and its closed or open surface, in the fixed link's frame.
+struct NamedMesh {
+  std::string name;
+  TriangleMesh mesh;
+};
+
+// A link's <inertial>, in the fixed link's frame with the joint at zero.
+struct LinkInertial {
+  bool given = false;
+  double mass = 0;                                      // kg
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();     // m
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();    // kg*m^2, about the centre
+};
 
 struct UrdfTool {
   std::string file;
@@ -21,6 +37,10 @@ struct UrdfTool {
   bool limited = false;  // a revolute joint (true) or a continuous one
   double lower = 0, upper = 0;  // rad, when limited
   TriangleMesh fixed, moving;   // m, fixed link frame, the joint at zero
+  std::vector<NamedMesh> fixed_pieces, moving_pieces;  // the same, element by element
+  LinkInertial fixed_inertial, moving_inertial;
+  double friction = 0;  // N*m, the joint's <dynamics friction>
+  double damping = 0;   // N*m*s/rad, the joint's <dynamics damping>
 };
 
 // `fixed` and `moving` name the links; both empty: the one revolute (or

@@ -13,6 +13,8 @@ packages=(
   libcivetweb-dev libjs-three libassimp-dev liburdfdom-dev
   nlohmann-json3-dev python3-jsonschema python3-yaml parallel
   clang-14 libclang-rt-14-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-venv
+  chromium
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -26,3 +28,8 @@ fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DAFFORD_WERROR=ON
 cmake --build build
+# Install (default prefix /usr/local): the program, the libraries, the
+# shipped data and the Python package, where Debian's /usr/bin/python3
+# finds it from any folder with no environment variable (docs/python.md).
+cmake --install build >/dev/null
+(cd / && /usr/bin/python3 -c "import afford")

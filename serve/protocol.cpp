@@ -334,4 +334,14 @@ std::string event_message(const RuleSet& rules, const Event& e, const Inference*
   return j.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
+std::string frame_event_message(const RuleSet& rules, const RuleState& rs, const Event& e) {
+  if (e.kind != EventKind::inferred) return event_message(rules, e, nullptr);
+  const std::vector<Inference> all = inferences(rules, rs);
+  const Inference* found = nullptr;
+  for (const Inference& inf : all) {
+    if (inf.function == function_name(rules, e.function) && inf.t == e.t) found = &inf;
+  }
+  return event_message(rules, e, found);
+}
+
 }  // namespace afford::serve

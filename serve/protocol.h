@@ -143,5 +143,8 @@ std::string error_message(std::string_view message);
 // "explanation":[{"t":1.1,"text":"...","detail":"..."}]. `inference` is
 // the inference for an inferred event (nullptr otherwise).
 std::string event_message(const RuleSet& rules, const Event& e, const Inference* inference);
+// The same for an event of the frame whose rule state is rs: an inference
+// is looked up in rs for its explanation.
+std::string frame_event_message(const RuleSet& rules, const RuleState& rs, const Event& e);
 
 }  // namespace afford::serve

@@ -164,19 +164,8 @@ class Poster : public Observer {
     every_ = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::lround(1.0 / 60.0 / model.timestep)));
   }
   void on_frame(const Model& model, const State& state, const RuleSet& rules, const RuleState& rs) override {
-    for (const Event* e = events_begin(rs); e != events_end(rs); ++e) {
-      if (e->kind != EventKind::inferred) {
-        post_event_(server_, event_message(rules, *e, nullptr));
-        continue;
-      }
-      // An inference: its explanation (text, allocated; a few frames a trial).
-      const std::vector<Inference> all = inferences(rules, rs);
-      const Inference* found = nullptr;
-      for (const Inference& inf : all) {
-        if (inf.function == function_name(rules, e->function) && inf.t == e->t) found = &inf;
-      }
-      post_event_(server_, event_message(rules, *e, found));
-    }
+    // An inference's explanation is text (allocated; a few frames a trial).
+    for (const Event* e = events_begin(rs); e != events_end(rs); ++e) post_event_(server_, frame_event_message(rules, rs, *e));
     if (state.frame % every_ != 0 && events_begin(rs) == events_end(rs)) return;
     fill_state_message(state, model, &message_);
     message_.squeeze = agent_.squeeze();

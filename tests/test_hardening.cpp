@@ -175,10 +175,10 @@ TEST(Hardening, OnlyRegularFilesAreRead) {
   const std::string fifo = testing::TempDir() + "afford_fifo_" + std::to_string(getpid());
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   EXPECT_THAT(error_of([&] { load_yaml_file(fifo); }),
-              HasSubstr(fifo + ":0:0: expected a regular file, found a FIFO"));
+              HasSubstr(fifo + ": expected a regular file, found a FIFO"));
   std::remove(fifo.c_str());
   EXPECT_THAT(error_of([] { load_yaml_file("/dev/zero"); }),
-              HasSubstr("/dev/zero:0:0: expected a regular file, found a device"));
+              HasSubstr("/dev/zero: expected a regular file, found a device"));
   EXPECT_THAT(error_of([] { load_yaml_file("/dev/urandom"); }), HasSubstr("found a device"));
 }
 
@@ -189,7 +189,7 @@ TEST(Hardening, FilesLargerThanTheCapAreRejectedBeforeReading) {
     out << "a: '" << std::string(kMaxYamlBytes, 'v') << "'\n";
   }
   EXPECT_THAT(error_of([&] { load_yaml_file(path); }),
-              HasSubstr(path + ":0:0: expected a file of at most 1048576 bytes, found 1048582 bytes"));
+              HasSubstr(path + ": expected a file of at most 1048576 bytes, found 1048582 bytes"));
   std::remove(path.c_str());
 }
 

@@ -359,7 +359,7 @@ TEST(ModelUrdfErrors, EachNamesTheFileAndTheElement) {
                                       "<mesh filename=\"missing.obj\"/>")),
               ::testing::HasSubstr(".urdf:2:3: expected link 'a' to name a mesh afford can read"));
   EXPECT_THAT(thrown<DataError>([] { (void)modelling::read_urdf_tool(fs::temp_directory_path().string()); }),
-              ::testing::HasSubstr(":0:0: expected"));
+              ::testing::HasSubstr(fs::temp_directory_path().string() + ": expected"));
   const std::string zero = urdf_error(arms("revolute", "0 0 0"));
   EXPECT_THAT(zero, ::testing::StartsWith(fs::temp_directory_path().string()));
   EXPECT_THAT(zero, ::testing::HasSubstr(".urdf:4:3: expected an axis of some length in joint 'j', found (0.000000, 0.000000, 0.000000)"));

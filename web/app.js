@@ -3,9 +3,22 @@
 // controls that drive the hand when this page is the driver.
 import * as THREE from '/three/build/three.module.js';
 import { OrbitControls } from '/three/examples/jsm/controls/OrbitControls.js';
+import { play } from './player.js';
+import { pollGamepad } from './gamepad.js';
 
 const $ = (id) => document.getElementById(id);
 const view = $('view');
+const viewing = new URLSearchParams(location.search).has('view');  // afford view: a recording, not a session
+
+// What the browser test reads (tests/test_browser.cpp): frames drawn, and
+// the time from a thumb command to the state that shows it (ms).
+const measured = { frames: 0, latencies: [], pending: null };
+window.affordPage = {
+  measured,
+  thumbOnScreen: () => (tips[0] ? toScreen(tips[0].position) : null),
+  thumbClosingOnScreen: () => (tips[0] && state ? thumbClosingOnScreen() : null),
+  toolOnScreen: () => (state ? toScreen(new THREE.Vector3().setFromMatrixPosition(new THREE.Matrix4().fromArray(state.object))) : null),
+};
 
 // ------------------------------------------------------------ the view
 
@@ -32,6 +45,7 @@ function resize() {
   camera.updateProjectionMatrix();
 }
 window.addEventListener('resize', resize);
+new ResizeObserver(resize).observe(view);  // the layout settles after the first draw
 resize();
 
 // A group whose pose is set from a column-major 4x4 each state.
@@ -44,6 +58,11 @@ function posed() {
 const fixedArm = posed(), movingArm = posed(), acteeBody = posed();
 let acteeMaterial = null, acteeColour = new THREE.Color(0xc08040);
 const tips = [];
+// The reaction the thumb feels (eq. 5), an arrow at the thumb pushing it
+// open; 60 mm at the hand's largest force.
+const reactionArrow = new THREE.ArrowHelper(new THREE.Vector3(1, 0, 0), new THREE.Vector3(), 0.01, 0xff3030, 0.012, 0.008);
+reactionArrow.visible = false;
+scene3.add(reactionArrow);
 let homeTarget = new THREE.Vector3(0.06, 0, 0.1), homeEye = new THREE.Vector3(0.35, -0.45, 0.4);
 
 function meshOf(m, material) {
@@ -72,7 +91,7 @@ function buildScene(s) {
   clear(fixedArm);
   clear(movingArm);
   clear(acteeBody);
-  const metal = new THREE.MeshStandardMaterial({ color: 0x9aa4ad, metalness: 0.6, roughness: 0.4 });
+  const metal = new THREE.MeshStandardMaterial({ color: 0x9aa4ad, metalness: 0.2, roughness: 0.5 });  // without an environment map, more metal draws darker
   for (const p of s.parts) {
     const mesh = meshOf(p, metal);
     mesh.matrixAutoUpdate = false;
@@ -122,6 +141,7 @@ function applyState(st) {
   st.fingertips.forEach((p, i) => { if (tips[i]) tips[i].position.set(p[0], p[1], p[2]); });
   if (acteeMaterial) acteeMaterial.color.set(st.condition === 'broken' ? 0xffee88 : acteeColour);
   bar('reaction-bar', st.reaction, st.max_force);
+  drawReaction(st);
   bar('actee-bar', st.actee_load, st.actee_limit);
   $('reaction').textContent = `${st.reaction.toFixed(1)} N of ${st.max_force.toFixed(0)} N`;
   $('actee-load').textContent = st.actee_limit > 0
@@ -131,6 +151,25 @@ function applyState(st) {
     `${st.grasped ? 'grasped' : st.gripping ? 'closing' : 'open'}${st.held ? ', held' : ''}; ` +
     `late frames ${st.deadline_misses}`;
   plot(st);
+  const p = measured.pending;
+  if (p && st.applied_seq >= p.seq) {
+    measured.latencies.push(performance.now() - p.at);
+    measured.pending = null;
+  }
+}
+
+function drawReaction(st) {
+  const f = st.max_force > 0 ? st.reaction / st.max_force : 0;
+  reactionArrow.visible = f > 0.01 && tips[0] !== undefined;
+  if (!reactionArrow.visible) return;
+  const o = new THREE.Matrix4().fromArray(st.object);
+  const origin = new THREE.Vector3().setFromMatrixPosition(o);
+  const axis = new THREE.Vector3(0, 0, 1).transformDirection(o);
+  const thumb = tips[0].position;
+  const opening = axis.cross(thumb.clone().sub(origin)).normalize();  // +theta
+  reactionArrow.position.copy(thumb);
+  reactionArrow.setDirection(opening);
+  reactionArrow.setLength(0.06 * Math.min(1, f) + 0.015, 0.012, 0.008);
 }
 
 // A strip chart of the last 10 s of session time: the thumb's reaction and
@@ -176,6 +215,7 @@ function addEvent(e) {
       li.appendChild(d);
     }
     $('events').appendChild(li);
+    return li;
   } else {
     const d = document.createElement('div');
     d.textContent = `${e.t.toFixed(3)} s ${e.function}: ${e.kind === 'node_reached' ? 'reached' : 'lost'} ${e.text}`;
@@ -184,14 +224,16 @@ function addEvent(e) {
     while (log.childNodes.length > 50) log.removeChild(log.firstChild);
     log.scrollTop = log.scrollHeight;
   }
+  return null;
 }
 
 // ------------------------------------------------------------ the socket
 
-let socket = null, seq = 0, role = 'watcher';
+let socket = null, seq = 0, role = 'watcher', latestState = null;
 function send(message) {
   if (!socket || socket.readyState !== WebSocket.OPEN || role !== 'driver') return;
   socket.send(JSON.stringify({ ...message, seq: ++seq }));
+  if (message.type === 'thumb' && !measured.pending) measured.pending = { seq, at: performance.now() };
 }
 
 function setRole(r) {
@@ -199,7 +241,7 @@ function setRole(r) {
   for (const b of document.querySelectorAll('aside button, button.driver')) {
     if (b.id !== 'view-reset') b.disabled = r !== 'driver';
   }
-  $('status').textContent = r === 'driver' ? 'driving' : 'watching (another page drives)';
+  $('status').textContent = viewing ? 'viewing a recording' : r === 'driver' ? 'driving' : 'watching (another page drives)';
 }
 
 function connect() {
@@ -209,7 +251,7 @@ function connect() {
     try { m = JSON.parse(ev.data); } catch { return; }
     if (m.type === 'hello' || m.type === 'role') setRole(m.role);
     else if (m.type === 'scene') buildScene(m);
-    else if (m.type === 'state' && scene) applyState(m);
+    else if (m.type === 'state' && scene) latestState = m;  // drawn at the next frame: a slow page skips states, never lags
     else if (m.type === 'event') addEvent(m);
     else if (m.type === 'error') $('error').textContent = m.message;
   };
@@ -218,7 +260,12 @@ function connect() {
     setTimeout(connect, 1000);
   };
 }
-connect();
+if (viewing) {
+  document.body.classList.add('viewing');
+  play({ buildScene, applyState, addEvent }).catch((e) => { $('error').textContent = `cannot play the recording: ${e}`; });
+} else {
+  connect();
+}
 
 // ------------------------------------------------------------ the controls
 
@@ -264,16 +311,15 @@ window.addEventListener('keydown', (e) => {
 // pivot, eq. 1) sets the squeeze.
 const raycaster = new THREE.Raycaster();
 let drag = null;
-function toScreen(p) {
+function toScreen(p) {  // page pixels (CSS), on the canvas as it is laid out now
   const v = p.clone().project(camera);
-  return new THREE.Vector2((v.x + 1) / 2 * view.clientWidth, (1 - v.y) / 2 * view.clientHeight);
-}
-renderer.domElement.addEventListener('pointerdown', (e) => {
-  if (!state || !tips[0] || role !== 'driver') return;
   const r = renderer.domElement.getBoundingClientRect();
-  const ndc = new THREE.Vector2((e.clientX - r.left) / r.width * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
-  raycaster.setFromCamera(ndc, camera);
-  if (raycaster.intersectObject(tips[0]).length === 0) return;
+  return new THREE.Vector2(r.left + (v.x + 1) / 2 * r.width, r.top + (1 - v.y) / 2 * r.height);
+}
+
+// The screen image of the thumb's closing direction: a unit vector (view
+// pixels) and pixels per metre of squeeze; null when it is edge-on.
+function thumbClosingOnScreen() {
   const o = new THREE.Matrix4().fromArray(state.object);
   const origin = new THREE.Vector3().setFromMatrixPosition(o);
   const axis = new THREE.Vector3(0, 0, 1).transformDirection(o);
@@ -282,7 +328,17 @@ renderer.domElement.addEventListener('pointerdown', (e) => {
   const a = toScreen(thumb), b = toScreen(thumb.clone().addScaledVector(closing, 0.01));
   const dir = b.clone().sub(a);
   const pixelsPerMetre = dir.length() / 0.01;
-  if (pixelsPerMetre < 1) return;
+  return pixelsPerMetre < 1 ? null : { dir: dir.normalize(), pixelsPerMetre };
+}
+renderer.domElement.addEventListener('pointerdown', (e) => {
+  if (!state || !tips[0] || role !== 'driver') return;
+  const r = renderer.domElement.getBoundingClientRect();
+  const ndc = new THREE.Vector2((e.clientX - r.left) / r.width * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
+  raycaster.setFromCamera(ndc, camera);
+  if (raycaster.intersectObject(tips[0]).length === 0) return;
+  const along = thumbClosingOnScreen();
+  if (!along) return;
+  const { dir, pixelsPerMetre } = along;
   drag = { x: e.clientX, y: e.clientY, dir: dir.normalize(), pixelsPerMetre, start: state.squeeze_target };
   controls.enabled = false;
   renderer.domElement.setPointerCapture(e.pointerId);
@@ -297,6 +353,12 @@ renderer.domElement.addEventListener('pointerup', endDrag);
 renderer.domElement.addEventListener('pointercancel', endDrag);
 
 function frame() {
+  measured.frames++;
+  if (latestState) {
+    applyState(latestState);
+    latestState = null;
+  }
+  if (!viewing && role === 'driver' && scene && state) pollGamepad(state, scene.limits.max_squeeze, send);
   controls.update();
   renderer.render(scene3, camera);
   requestAnimationFrame(frame);

@@ -4,6 +4,7 @@
 #  1. builds tests/install_consumer against it (find_package(afford 0.10))
 #     and runs it on the installed data ($AFFORD_DATA_DIR): it must print
 #     the nutcracker's lever and the paper's pinch, hold and crash;
+#     and its stepping example afford_step (docs/libraries.md);
 #  2. runs the installed afford from another folder without
 #     $AFFORD_DATA_DIR: it must find the installed data beside itself
 #     (the actees `describe` lists come from there).
@@ -45,6 +46,35 @@ expect "^nutcracker: type2, mechanical advantage 7\.20 \(effort at 0\.180 m, loa
 expect "^pinch at [0-9]+\.[0-9]{3} s$" "$out"
 expect "^hold at [0-9]+\.[0-9]{3} s$" "$out"
 expect "^crash at [0-9]+\.[0-9]{3} s$" "$out"
+
+# The stepping example (docs/libraries.md): with the script's own thumb it
+# infers what run_session() inferred, at the same times.
+ran=$(printf '%s\n' "$out" | grep -E "^[a-z]+ at [0-9.]+ s$")
+stepped=$(cd / && AFFORD_DATA_DIR="$prefix/share/afford" "$prefix/consumer-build/afford_step" \
+          sessions/paper-nutcracker.yaml 0 2>&1) || { echo "$stepped"; fail "afford_step failed"; }
+echo "$stepped"
+[ "$(printf '%s\n' "$stepped" | grep -E "^[a-z]+ at [0-9.]+ s$")" = "$ran" ] ||
+  fail "afford_step with the script's thumb does not infer what the run did"
+expect "^4000 frames, largest force on the actee [0-9.]+ N$" "$stepped"
+# The thumb held 5 cm away from the arm, outward, never grasps: nothing inferred.
+offside=$(cd / && AFFORD_DATA_DIR="$prefix/share/afford" "$prefix/consumer-build/afford_step" \
+          sessions/paper-nutcracker.yaml -50 2>&1) || { echo "$offside"; fail "afford_step failed"; }
+echo "$offside"
+expect "^4000 frames, largest force on the actee 0\.0 N$" "$offside"
+printf '%s\n' "$offside" | grep -qE " at [0-9.]+ s$" && fail "afford_step inferred a function with the thumb off the tool"
+
+# The Python package (when the build has it): installed under the prefix's
+# lib/python3.X/*-packages, importable from there with nothing but the path.
+if ls "$build"/python/afford/_afford*.so >/dev/null 2>&1; then
+  package=$(ls -d "$prefix"/lib/python3*/*-packages/afford 2>/dev/null | head -n 1)
+  [ -n "$package" ] && [ -f "$package/__init__.py" ] && [ -f "$package/__init__.pyi" ] ||
+    fail "the Python package is not installed under $prefix/lib/python3.X"
+  ls "$package"/_afford*.so >/dev/null 2>&1 || fail "the Python module is not installed in $package"
+  py=$(cd / && PYTHONPATH=$(dirname "$package") AFFORD_DATA_DIR="$prefix/share/afford" /usr/bin/python3 -c \
+       "import afford; print(' '.join(f['name'] for f in afford.load(afford.data_dir() + '/sessions/paper-nutcracker.yaml').run()['functions']))" 2>&1) ||
+    { echo "$py"; fail "the installed Python package failed"; }
+  expect "^pinch hold crash$" "$py"
+fi
 
 out=$(cd / && env -u AFFORD_DATA_DIR "$prefix/bin/afford" describe "$prefix/share/afford/objects/nutcracker.yaml" 2>&1) ||
   { echo "$out"; fail "the installed afford failed"; }
