@@ -20,6 +20,7 @@
 #include <optional>
 
 #include "commands.h"
+#include "cross_section.h"
 #include "files.h"
 #include "json_output.h"
 #include "lever.h"
@@ -138,6 +139,50 @@ void print_plane(const SymmetryPlane& s, double diagonal) {
   std::cout << "    normal " << direction(s.normal) << " through " << qv(s.point, dim::length) << ": the reflection "
             << q(s.score, dim::length) << " RMS from the surface (" << format_quantity(100 * s.score / diagonal, dim::none)
             << " % of the diagonal)\n";
+}
+
+// The cross-section on the best plane of symmetry and its lines of symmetry.
+void print_section(const modelling::CrossSection& c) {
+  if (!c.closed) {
+    std::cout << "  cross-section on the best plane: none (" << c.why_not << ")\n";
+    return;
+  }
+  const std::string tol = format_quantity(100 * c.tolerance, dim::none) + " % of its diagonal";
+  std::cout << "  cross-section on the best plane: area " << format_quantity(c.area * 1e4, dim::none) << " cm^2, "
+            << c.loops.size() << (c.loops.size() == 1 ? " loop" : " loops") << " " << q(c.perimeter, dim::length)
+            << " long, centre " << qv(c.centre, dim::length) << "\n";
+  auto line = [](const modelling::SectionLine& l) {
+    std::cout << "    along " << direction(l.direction) << ": the reflection " << q(l.score, dim::length)
+              << " RMS from the boundary (" << format_quantity(100 * l.relative, dim::none) << " % of the diagonal)\n";
+  };
+  if (c.lines.empty()) {
+    std::cout << "  the section has no line of symmetry within " << tol << "; the nearest, through its centre:\n";
+    line(c.best);
+  } else {
+    std::cout << "  the section has " << c.lines.size() << (c.lines.size() == 1 ? " line" : " lines")
+              << " of symmetry through its centre (within " << tol << "), best first:\n";
+  }
+  for (const modelling::SectionLine& l : c.lines) line(l);
+}
+
+Json section_json(const modelling::CrossSection& c) {
+  Json j{{"normal", vec_json(c.normal)}, {"point_m", vec_json(c.point)}, {"closed", c.closed}};
+  if (!c.closed) {
+    j["why_not"] = c.why_not;
+    return j;
+  }
+  auto line = [](const modelling::SectionLine& l) {
+    return Json{{"direction", vec_json(l.direction)}, {"rms_m", json_number(l.score)}, {"relative", json_number(l.relative)}};
+  };
+  Json lines = Json::array();
+  for (const modelling::SectionLine& l : c.lines) lines.push_back(line(l));
+  j["area_m2"] = json_number(c.area);
+  j["loops"] = c.loops.size();
+  j["perimeter_m"] = json_number(c.perimeter);
+  j["centre_m"] = vec_json(c.centre);
+  j["lines"] = lines;
+  j["best_line"] = line(c.best);
+  return j;
 }
 
 void print_text(const ModelOptions& o, const TriangleMesh& mesh, const MassProperties& p, const Mass& mass,
@@ -384,6 +429,35 @@ void print_model(const modelling::ToolModel& m) {
   for (const modelling::ConvexPart& p : m.parts) fixed += p.arm == Arm::fixed;
   std::cout << "  contact geometry: " << m.parts.size() << " convex parts (" << fixed << " fixed, "
             << m.parts.size() - fixed << " moving)\n";
+  const modelling::JawGaps& j = m.jaws;
+  std::cout << "  interaction space (L_is) from the shape: the gap between the jaws, mm, at " << j.distances.size()
+            << " places from " << q(j.distances.front(), dim::length) << " to " << q(j.distances.back(), dim::length)
+            << " along the arm:\n";
+  for (size_t a = 0; a < j.angles.size(); ++a) {
+    std::cout << "    opening " << q(j.angles[a], dim::angle) << ":";
+    for (size_t k = 0; k < j.gap[a].size(); ++k) {
+      const double gap = j.gap[a][k] < 1e-9 ? 0.0 : j.gap[a][k];  // m: closed jaws meet to rounding
+      std::cout << (k == 0 ? " " : ", ") << format_quantity(gap * 1e3, dim::none);
+    }
+    std::cout << "\n";
+  }
+  std::cout << "    fully open the shape's jaws are " << q(j.gap_from(), dim::length) << " to " << q(j.gap_to(), dim::length)
+            << " apart; the object file's wedge (|r| sin theta_max, what guide and explore use) "
+            << q(j.wedge_from, dim::length) << " to " << q(j.wedge_to, dim::length) << "\n";
+  auto face = [](const char* what, const modelling::FacePlane& f) {
+    std::cout << "    " << what << ": ";
+    if (!f.found) {
+      std::cout << "none (the part has no outline from " << q(f.from, dim::length) << " to " << q(f.to, dim::length) << ")\n";
+      return;
+    }
+    std::cout << "normal " << direction(f.normal) << " through " << qv(f.point, dim::length) << ", from "
+              << q(f.from, dim::length) << " to " << q(f.to, dim::length) << ", the face " << q(f.rms < 1e-9 ? 0.0 : f.rms, dim::length)  // m: flat to rounding
+              << " RMS off flat\n";
+  };
+  std::cout << "  contact planes (L_cp, the handles' outer faces) and the support plane (the fixed jaw's face):\n";
+  face("fixed handle (object frame)", m.faces.fixed_contact);
+  face("moving handle (its arm's frame)", m.faces.moving_contact);
+  face("support (object frame)", m.faces.support);
   if (m.spring) {
     std::cout << "  spring: " << q(m.spring->constant, dim::stiffness) << " at " << q(m.spring->position, dim::length)
               << (m.spring->rest_length > 0 ? ", free length " + q(m.spring->rest_length, dim::length)
@@ -409,6 +483,25 @@ Json lever_json(const modelling::LeverGeometry& l) {
               {"emphasis_found", l.emphasis_found}};
 }
 
+Json face_json(const modelling::FacePlane& f) {
+  if (!f.found) return nullptr;
+  return Json{{"normal", vec_json(f.normal)}, {"point_m", vec_json(f.point)},
+              {"along_m", Json::array({json_number(f.from), json_number(f.to)})}, {"rms_m", json_number(f.rms)}};
+}
+
+Json jaws_json(const modelling::JawGaps& j) {
+  Json angles = Json::array(), distances = Json::array(), gap = Json::array();
+  for (const double a : j.angles) angles.push_back(json_number(a));
+  for (const double r : j.distances) distances.push_back(json_number(r));
+  for (const auto& row : j.gap) {
+    Json g = Json::array();
+    for (const double x : row) g.push_back(json_number(x));
+    gap.push_back(g);
+  }
+  return Json{{"angles_rad", angles}, {"distances_m", distances}, {"gap_m", gap},
+              {"wedge_m", Json::array({json_number(j.wedge_from), json_number(j.wedge_to)})}};
+}
+
 Json model_json(const modelling::ToolModel& m) {
   return Json{{"mass_kg", json_number(m.mass())},
               {"mass_from", m.mass_from},
@@ -418,11 +511,23 @@ Json model_json(const modelling::ToolModel& m) {
               {"symmetry_plane", plane_json(m.plane)},
               {"functional_rotation_rad", vec_json(m.pose_rotation)},
               {"parts", m.parts.size()},
+              {"interaction_space", jaws_json(m.jaws)},
+              {"contact_plane_fixed", face_json(m.faces.fixed_contact)},
+              {"contact_plane_moving", face_json(m.faces.moving_contact)},
+              {"support_plane", face_json(m.faces.support)},
               {"spring", m.spring.has_value()}};
 }
 
 int model_two_part(const ModelOptions& o) {
   const modelling::UrdfTool tool = read_tool(o);
+  // The meshes a URDF names are inputs too: --out never over one of them.
+  std::vector<std::string> inputs = o.inputs;
+  for (const auto* pieces : {&tool.fixed_pieces, &tool.moving_pieces}) {
+    for (const modelling::NamedMesh& piece : *pieces) {
+      if (!piece.mesh_file.empty()) inputs.push_back(piece.mesh_file);
+    }
+  }
+  const OutputScope scope({.writer = "model", .force = o.force, .inputs = inputs});
   UrdfPart parts[2] = {{"fixed", &tool.fixed, modelling::mass_properties(tool.fixed)},
                        {"moving", &tool.moving, modelling::mass_properties(tool.moving)}};
   const double volume = parts[0].p.volume + parts[1].p.volume;
@@ -547,8 +652,11 @@ int model_rigid(const ModelOptions& o) {
   for (SymmetryPlane& plane : sym.planes) plane.point = tidy(plane.point, size);
   sym.best.point = tidy(sym.best.point, size);
   const modelling::RestingPoses poses = modelling::resting_poses(mesh, p.centroid);
+  modelling::CrossSection section = modelling::cross_section(mesh, sym.best.normal, sym.best.point, o.tolerance);
+  section.centre = tidy(section.centre, size);
   if (o.json) {
     Json j = report_json(o, mesh, p, mass, sym);
+    j["cross_section"] = section_json(section);
     j["resting"] = Json{{"faces", poses.faces.size()},
                         {"hull_corners", poses.hull_corners},
                         {"hull_outside_m", json_number(poses.hull_outside)},
@@ -557,6 +665,7 @@ int model_rigid(const ModelOptions& o) {
     std::cout << j.dump() << "\n";
   } else {
     print_text(o, mesh, p, mass, sym);
+    print_section(section);
     print_resting(poses, sym);
   }
   return 0;

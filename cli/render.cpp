@@ -60,7 +60,8 @@ int render_command(RenderOptions ro) {
   std::vector<std::string> inputs = session.files;
   if (ro.guides) inputs.push_back(guides_file);
   const OutputScope scope({.writer = "render", .force = ro.force, .inputs = inputs});
-  for (const char* name : {"contact_sheet.png", "timeline.png", "timeline.svg"}) {
+  for (const char* name : {"contact_sheet.png", "timeline.png", "timeline.svg", "session.mp4"}) {
+    if (!(o.frames && o.mp4) && std::string(name) == "session.mp4") continue;  // no MP4 to write
     check_output((std::filesystem::path(o.out_dir) / name).string());  // refused now, not after the frames
   }
   const double frames = std::floor(ScriptedAgent(session.script).duration() * o.fps + 1e-9) + 1;

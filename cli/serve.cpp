@@ -1,5 +1,5 @@
 // afford serve [SESSION] [--port N] [--bind ADDR] [--participant ID]
-//              [--out DIR] [--duration S]:
+//              [--out DIR] [--actees DIR] [--guides FILE] [--duration S]:
 // the session's frame loop at its timestep (1 kHz) in real time behind a
 // local web page (serve/server.h): the page drives the hand (grasp,
 // squeeze, carry, release), takes actees from the shelf and resets the
@@ -144,6 +144,12 @@ void add_serve(CLI::App& app, Run* run) {
       ->capture_default_str();
   cmd->add_option("--out", o->server.out_dir, "the folder of the trials (default out/serve-<session>)")
       ->type_name(kDir);
+  cmd->add_option("--actees", o->server.user_actees_dir,
+                  "a folder of your actees, on the shelf beside the shipped ones (each file checked at start)")
+      ->type_name(kDir);
+  cmd->add_option("--guides", o->server.guides_file,
+                  "the guides drawn in the page (default: the shipped rules/guides.yaml, as afford guide)")
+      ->type_name(kFile);
   cmd->add_option("--duration", o->server.duration, "stop after S seconds (default: until Ctrl-C)")
       ->type_name("S")
       ->check(seconds_above_zero());

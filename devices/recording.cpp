@@ -1,5 +1,6 @@
 // The recorder (recording.h): the header once, then one write() per frame.
 #include "recording.h"
+#include "write_all.h"
 
 #include <algorithm>
 #include <bit>
@@ -56,20 +57,6 @@ std::string read_file_bytes(const std::string& path) {
   } catch (const DataError& e) {
     throw std::runtime_error("cannot read " + path + " to record it: " + e.message());
   }
-}
-
-// Writes all n bytes, retrying short writes and EINTR. Returns errno or 0.
-int write_all(int fd, const unsigned char* p, size_t n) {
-  while (n > 0) {
-    const ssize_t w = ::write(fd, p, n);
-    if (w < 0) {
-      if (errno == EINTR) continue;
-      return errno;
-    }
-    p += w;
-    n -= static_cast<size_t>(w);
-  }
-  return 0;
 }
 
 }  // namespace

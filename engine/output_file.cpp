@@ -1,4 +1,5 @@
 #include "output_file.h"
+#include "write_all.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -149,19 +150,6 @@ bool manifest_lists(const fs::path& folder, const std::string& name, const std::
   return writer == nullptr ? k->names.count(name) > 0 : k->entries.count({*writer, name}) > 0;
 }
 
-int write_all(int fd, const char* p, size_t n) {
-  while (n > 0) {
-    const ssize_t w = ::write(fd, p, n);
-    if (w < 0) {
-      if (errno == EINTR) continue;
-      return errno;
-    }
-    p += w;
-    n -= static_cast<size_t>(w);
-  }
-  return 0;
-}
-
 const char* kManifestHead = "# The files afford wrote into this folder, by command (WRITER<TAB>NAME): afford\n"
                             "# replaces these without --force, and clears a command's stale ones.\n";
 
@@ -202,6 +190,20 @@ bool links_to_device(const std::string& path) {
 }
 
 }  // namespace
+
+int write_all(int fd, const void* data, size_t n) {
+  const char* p = static_cast<const char*>(data);
+  while (n > 0) {
+    const ssize_t w = ::write(fd, p, n);
+    if (w < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    p += w;
+    n -= static_cast<size_t>(w);
+  }
+  return 0;
+}
 
 OutputScope::OutputScope(const OutputPolicy& policy) {
   OutputState next;

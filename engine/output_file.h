@@ -83,6 +83,10 @@ class OutputFile {
   // manifest and renames it into place.
   void commit();
   const std::string& path() const { return path_; }
+  // Where the bytes go until commit(): the temporary file, or the target
+  // when written in place. For a program that writes the file itself
+  // (ffmpeg), whose file is then renamed into place like any other.
+  const std::string& written_path() const { return temp_.empty() ? path_ : temp_; }
 
  private:
   std::string path_, temp_;  // temp_ empty when written in place

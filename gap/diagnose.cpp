@@ -203,6 +203,15 @@ std::vector<HeldOutCurve> held_out_curves(const std::vector<Replay>& replays, co
   return curves;
 }
 
+// The held-out squared errors of the samples judged in the actee's contact.
+std::vector<double> in_contact_only(const std::vector<double>& sq, const std::vector<bool>& judged_in_contact) {
+  std::vector<double> out;
+  for (size_t j = 0; j < sq.size(); ++j) {
+    if (judged_in_contact[j]) out.push_back(sq[j]);
+  }
+  return out;
+}
+
 }  // namespace
 
 const char* verdict_name(Verdict v) {
@@ -493,14 +502,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // do not tell apart from it (not significantly worse, sample by
       // sample). The first alone is not enough where the best's cut lies
       // in a few samples: batch means that are mostly zero make a weak test.
-      auto where = [&](const std::vector<double>& sq) {
-        if (!contact) return sq;
-        std::vector<double> out;
-        for (size_t j = 0; j < sq.size(); ++j) {
-          if (judged_in_contact[j]) out.push_back(sq[j]);
-        }
-        return out;
-      };
+      auto where = [&](const std::vector<double>& sq) { return contact ? in_contact_only(sq, judged_in_contact) : sq; };
       const double was = rmse_in(current_scored, contact);
       auto cut_of = [&](const Scored& f) { return was * was - rmse_in(f, contact) * rmse_in(f, contact); };  // N^2
       const double cut = cut_of(best.scored);
@@ -560,21 +562,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     const bool contact = contact_samples > 0 && std::any_of(chosen.begin(), chosen.end(), [](EffectKind k) {
                            return manifest_of(k).home == EffectHome::actee;
                          });
-    auto where = [&](const std::vector<double>& sq) {
-      if (!contact) return sq;
-      std::vector<double> out;
-      for (size_t j = 0; j < sq.size(); ++j) {
-        if (judged_in_contact[j]) out.push_back(sq[j]);
-      }
-      return out;
-    };
     // Where the chosen set is judged (the contact, for an actee's law),
     // and, since a gain scales every reading, over every sample too.
     auto alike_in = [&](bool in_contact) {
       std::vector<double> gain_sq = gain.sq, set_sq = current_scored.sq;
       if (in_contact) {
-        gain_sq = where(gain.sq);
-        set_sq = where(current_scored.sq);
+        gain_sq = in_contact_only(gain.sq, judged_in_contact);
+        set_sq = in_contact_only(current_scored.sq, judged_in_contact);
       }
       double gain_sum = 0;
       for (double v : gain_sq) gain_sum += v;

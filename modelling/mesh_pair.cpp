@@ -26,8 +26,8 @@ UrdfTool mesh_pair_tool(const std::string& fixed, const std::string& moving, std
   tool.upper = upper;
   tool.fixed = read_mesh(fixed, metres_per_unit);  // DataError: a unit for a DAE, none for an STL, ...
   tool.moving = read_mesh(moving, metres_per_unit);
-  tool.fixed_pieces.push_back({"fixed", tool.fixed});
-  tool.moving_pieces.push_back({"moving", tool.moving});
+  tool.fixed_pieces.push_back({"fixed", tool.fixed, fixed});
+  tool.moving_pieces.push_back({"moving", tool.moving, moving});
   return tool;
 }
 

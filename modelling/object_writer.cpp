@@ -37,7 +37,11 @@ std::string object_yaml(const ToolModel& m) {
       << ".\n"
       << "# Jaws (application) " << found(l.application_found) << "; handle (emphasis) " << found(l.emphasis_found)
       << ".\n"
-      << "# Parts: convex hulls of the collision elements (long concave ones cut in slabs).\n";
+      << "# Parts: convex hulls of the collision elements (long concave ones cut in slabs).\n"
+      << "# Interaction space (L_is): application and theta_max, the wedge |r| sin theta_max, " << mm(m.jaws.wedge_from)
+      << " to " << mm(m.jaws.wedge_to) << " wide;\n"
+      << "# the shape's jaws fully open are " << mm(m.jaws.gap_from()) << " to " << mm(m.jaws.gap_to())
+      << " apart (afford model reports the gap at each opening).\n";
   if (!m.spring) {
     out << "# No spring: a URDF or a mesh has none. Add it with afford model ... --spring K_N_M_PER_RAD,REST_DEG,\n"
         << "# or write a guess and fit it to a probing trace with afford gap --probe (gap/README.md).\n";

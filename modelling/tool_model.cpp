@@ -135,6 +135,11 @@ ToolModel model_tool(const UrdfTool& tool, const ToolModelOptions& o) {
   m.pose_rotation = o.rotation ? *o.rotation : upright(m.plane.normal);
   m.rotation_given = o.rotation.has_value();
   m.resting = resting_poses(whole, m.centre_of_gravity);
+  TriangleMesh fixed_part, moving_part;
+  append(fixed_part, tool.fixed, lever.fixed_to_object);
+  append(moving_part, tool.moving, lever.moving_to_arm);
+  m.jaws = jaw_gaps(fixed_part, moving_part, lever);
+  m.faces = contact_planes(fixed_part, moving_part, lever);
 
   std::vector<std::string> taken;
   std::vector<NamedMesh> pieces;
@@ -142,7 +147,7 @@ ToolModel model_tool(const UrdfTool& tool, const ToolModelOptions& o) {
     const bool is_fixed = arm == &tool.fixed_pieces;
     pieces.clear();
     for (const NamedMesh& p : *arm) {
-      NamedMesh placed{p.name, {}};
+      NamedMesh placed{p.name, {}, p.mesh_file};
       placed.mesh.file = p.mesh.file;
       append(placed.mesh, p.mesh, is_fixed ? lever.fixed_to_object : lever.moving_to_arm);
       pieces.push_back(std::move(placed));

@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "contact_planes.h"
 #include "convex_parts.h"
+#include "jaw_gaps.h"
 #include "lever_geometry.h"
 #include "stable_poses.h"
 #include "symmetry_planes.h"
@@ -64,6 +66,8 @@ struct ToolModel {
   bool rotation_given = false;    // pose_rotation from the options
   RestingPoses resting;           // of the tool at rest, object frame
   std::vector<ConvexPart> parts;
+  JawGaps jaws;  // the interaction space from the shape
+  ContactPlanes faces;  // the contact planes (handles) and the support plane (fixed jaw)
   double friction = 0;  // N*m, pivot
   double damping = 0;   // N*m*s/rad
   double mass() const { return fixed_mass + moving_mass; }

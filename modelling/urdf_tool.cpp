@@ -121,8 +121,9 @@ TriangleMesh geometry_mesh(const UrdfText& urdf, const std::string& link, const 
 // piece of its own.
 void add_element(const UrdfText& urdf, const std::string& link, const std::string& name, const urdf::Geometry& g,
                  const Isometry3d& pose, TriangleMesh& out, std::vector<NamedMesh>& pieces) {
-  NamedMesh piece{name, {}};
+  NamedMesh piece{name, {}, {}};
   piece.mesh.file = urdf.path;
+  if (g.type == urdf::Geometry::MESH) piece.mesh_file = mesh_path(urdf.path, static_cast<const urdf::Mesh&>(g).filename);
   append(piece.mesh, geometry_mesh(urdf, link, g), pose);
   append(out, piece.mesh, Isometry3d::Identity());
   pieces.push_back(std::move(piece));

@@ -19,6 +19,7 @@ namespace afford::modelling {
 struct NamedMesh {
   std::string name;
   TriangleMesh mesh;
+  std::string mesh_file;  // the mesh file it was read from; "" for a box, sphere or cylinder
 };
 
 // A link's <inertial>, in the fixed link's frame with the joint at zero.

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "frame_overlay.h"
+#include "output_file.h"
 #include "plot.h"
 #include "png.h"
 #include "run.h"
@@ -306,11 +307,15 @@ RenderSessionResult render_session(const CompiledSession& session, const RenderS
       result.note = "no MP4: ffmpeg is not on PATH (the frames are there to encode by hand)";
     } else {
       const std::string mp4 = (out / "session.mp4").string();
+      // ffmpeg writes the temporary file beside it (its name has no
+      // extension: -f mp4), renamed into place only when ffmpeg succeeded.
+      OutputFile file(mp4);
       const std::string cmd = "ffmpeg -y -loglevel error -framerate " + fmt("%g", o.fps) + " -i " +
                               shell_quote((out / "frame_%05d.png").string()) +
-                              " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p " + shell_quote(mp4) +
-                              " </dev/null";
+                              " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -f mp4 " +
+                              shell_quote(file.written_path()) + " </dev/null";
       if (std::system(cmd.c_str()) == 0) {
+        file.commit();
         result.files.push_back(mp4);
       } else {
         result.note = "no MP4: ffmpeg failed (" + cmd + ")";

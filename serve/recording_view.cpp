@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "data_dir.h"
+#include "guides.h"
 #include "page_agent.h"
 #include "protocol.h"
 #include "recording_source.h"
@@ -68,7 +70,9 @@ RecordingView recording_view(const std::string& recording_file) {
   } catch (const std::runtime_error&) {
   }
   const PageStart start = page_start(session);
-  SceneInfo info{0, "", rec.file, session.model.has_actee ? session.model.actee_name : "", {}};
+  // The shipped guides, as `afford guide` computes them.
+  const Guides guides = compute_guides(session.model, load_guides(shipped_path("rules/guides.yaml")));
+  SceneInfo info{0, "", rec.file, session.model.has_actee ? session.model.actee_name : "", {}, &guides};
   const std::string scene = scene_message(session, grip, start, command_limits(session.model, grip, start), info);
 
   const Json head{{"file", rec.file},         {"session", rec.session_name},   {"source", rec.source},

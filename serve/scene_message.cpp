@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "guides_message.h"
 #include "mesh.h"
 
 namespace afford::serve {
@@ -75,7 +76,8 @@ std::string scene_message(const CompiledSession& session, const PageGrip& grip, 
          {"hand_start", Json::array({start.hand_position.x(), start.hand_position.y(), start.hand_position.z()})},
          {"grip", {{"posture", grip.posture}, {"thumb_distance", grip.thumb_distance}}},
          {"shelf", info.shelf},
-         {"timestep", m.timestep}};
+         {"timestep", m.timestep},
+         {"guides", info.guides ? guides_json(*info.guides) : Json(nullptr)}};
   return j.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 

@@ -12,13 +12,15 @@
 //    "fingertip_radius":[5 numbers],"theta":{"min":..,"max":..,"rest":..},
 //    "limits":{"max_squeeze":..,"hand_min":[3],"hand_max":[3]},
 //    "hand_start":[3],"grip":{"posture":"medium_wrap","thumb_distance":0.13},
-//    "shelf":["coconut","egg",...],"timestep":0.001}
+//    "shelf":["coconut","egg",...],"timestep":0.001,
+//    "guides":{...guides_message.h...} | null}
 // Lengths in m, angles in rad, forces in N; matrices column-major.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "guides.h"
 #include "page_agent.h"
 #include "protocol.h"
 #include "session.h"
@@ -29,6 +31,7 @@ struct SceneInfo {
   int trial = 0;
   std::string participant, recording, actee_name;
   std::vector<std::string> shelf;
+  const Guides* guides = nullptr;  // `afford guide`'s guides of the tool (guides_message.h); null: none sent
 };
 
 std::string scene_message(const CompiledSession& session, const PageGrip& grip, const PageStart& start,

@@ -199,8 +199,11 @@ Server::Server(ServeOptions options) : options_(std::move(options)) {
   grip_ = page_grip(session_);
   start_ = page_start(session_);
   limits_ = command_limits(session_.model, grip_, start_);
-  shelf_ = actee_shelf(options_.actees_dir.empty() ? shipped_path("actees") : options_.actees_dir);
+  shelf_ = actee_shelf(options_.actees_dir.empty() ? shipped_path("actees") : options_.actees_dir,
+                       options_.user_actees_dir);
   shelf_names_ = shelf_names(shelf_);
+  guides_ = compute_guides(session_.model, load_guides(options_.guides_file.empty() ? shipped_path("rules/guides.yaml")
+                                                                                    : options_.guides_file));
   out_dir_ = options_.out_dir.empty() ? fs::path("out") / ("serve-" + session_.name) : fs::path(options_.out_dir);
   web_dir_ = options_.web_dir.empty() ? shipped_path("web") : options_.web_dir;
 }
@@ -359,7 +362,7 @@ std::unique_ptr<Server::Trial> Server::begin_trial(int actee) {
   t->trace_file = std::make_unique<CheckedFile>((outputs / "trace.csv").string());
   t->timeline = std::make_unique<TimelineWriter>(t->timeline_file->file);
   t->trace = std::make_unique<TraceWriter>(t->trace_file->file);
-  SceneInfo info{t->number, options_.participant, t->recording, t->actee_name, shelf_names_};
+  SceneInfo info{t->number, options_.participant, t->recording, t->actee_name, shelf_names_, &guides_};
   t->scene = scene_message(t->session, grip_, start_, limits_, info);
   ++next_trial_;
   return t;

@@ -32,6 +32,7 @@
 #include <thread>
 #include <vector>
 
+#include "guides.h"
 #include "page_agent.h"
 #include "protocol.h"
 #include "session.h"
@@ -51,7 +52,9 @@ struct ServeOptions {
   double duration = std::numeric_limits<double>::infinity();  // s of session time over all trials
   std::string web_dir;                  // the page's files (default the shipped web/)
   std::string three_dir = "/usr/share/javascript/three";  // Debian's libjs-three, served as /three/
-  std::string actees_dir;               // the shelf (default the shipped actees/)
+  std::string actees_dir;               // the shipped shelf (default the shipped actees/)
+  std::string guides_file;              // the guides drawn (default the shipped rules/guides.yaml)
+  std::string user_actees_dir;          // a user's actees, on the shelf after the shipped ones ("" none)
   // true: frames at the session's timestep in real time. false: a frame
   // runs only when advance() allows it (tests drive by session time).
   bool realtime = true;
@@ -146,6 +149,7 @@ class Server {
   CommandLimits limits_;
   std::vector<ShelfActee> shelf_;
   std::vector<std::string> shelf_names_;
+  Guides guides_;  // `afford guide`'s, of the served tool, sent with each scene
   std::filesystem::path out_dir_;
   std::string web_dir_;
   int port_ = 0;

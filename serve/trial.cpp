@@ -9,6 +9,7 @@
 
 #include "derive.h"
 #include "files.h"
+#include "load.h"
 
 namespace afford::serve {
 
@@ -23,6 +24,26 @@ std::vector<ShelfActee> actee_shelf(const std::string& folder) {
   }
   if (ec) throw std::runtime_error("cannot list the actees in " + folder + ": " + ec.message());
   std::sort(shelf.begin(), shelf.end(), [](const ShelfActee& a, const ShelfActee& b) { return a.name < b.name; });
+  return shelf;
+}
+
+std::vector<ShelfActee> actee_shelf(const std::string& shipped, const std::string& user) {
+  std::vector<ShelfActee> shelf = actee_shelf(shipped);
+  if (user.empty()) return shelf;
+  std::error_code ec;
+  if (fs::equivalent(shipped, user, ec)) return shelf;  // the shipped folder named again
+  if (!fs::is_directory(user)) throw std::runtime_error("--actees " + user + ": not a folder");
+  const size_t shipped_count = shelf.size();
+  for (ShelfActee& a : actee_shelf(user)) {
+    load_actee(a.file);  // a mistake in the user's file stops the start, located, not the trial that takes it
+    for (size_t i = 0; i < shipped_count; ++i) {
+      if (shelf[i].name == a.name) {
+        throw std::runtime_error(a.file + ": an actee named '" + a.name + "' is already on the shelf (" +
+                                 shelf[i].file + "); rename the file");
+      }
+    }
+    shelf.push_back(std::move(a));
+  }
   return shelf;
 }
 

@@ -24,6 +24,11 @@ struct ShelfActee {
   std::string file;  // its path
 };
 std::vector<ShelfActee> actee_shelf(const std::string& folder);
+// The shelf of `shipped` (a folder) and then a user's folder's actees
+// (`user`, "" none), each file of the user's loaded (a mistake throws
+// DataError naming file:line:col) and its name new on the shelf (one a
+// shipped actee has throws std::runtime_error naming both files).
+std::vector<ShelfActee> actee_shelf(const std::string& shipped, const std::string& user);
 std::vector<std::string> shelf_names(const std::vector<ShelfActee>& shelf);
 
 // True for a participant id of 1 to 32 letters, digits, '-' and '_'.

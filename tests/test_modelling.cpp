@@ -11,6 +11,7 @@
 #include <numbers>
 #include <unistd.h>
 
+#include "cross_section.h"
 #include "errors.h"
 #include "mass_properties.h"
 #include "mesh_file.h"
@@ -155,6 +156,113 @@ TEST(ModelMesh, AnLShapeHasOnePlane) {
   ASSERT_EQ(s.planes.size(), 1u);
   EXPECT_TRUE(has_normal(s, Vector3d::UnitZ(), 1e-12));
   EXPECT_LT(s.planes[0].relative, 1e-9);
+}
+
+// A line of the section with this direction (either sign), within `tol`.
+bool has_line(const modelling::CrossSection& c, const Vector3d& d, double tol) {
+  for (const auto& l : c.lines) {
+    if (std::abs(std::abs(l.direction.dot(d.normalized())) - 1) < tol) return true;
+  }
+  return false;
+}
+
+TEST(ModelSection, ABoxCutThroughItsCentreOnEachPlane) {
+  // tests/data/meshes/box.obj: 40 x 20 x 10 mm about (5, 6, 7) mm. Across x
+  // the section is 20 x 10 = 200 mm^2, 60 mm round; across y 40 x 10 = 400
+  // mm^2, 100 mm; across z 40 x 20 = 800 mm^2, 120 mm. A rectangle that is
+  // not a square has two lines of symmetry, along its sides.
+  const TriangleMesh mesh = modelling::read_mesh(AFFORD_SOURCE_DIR "/tests/data/meshes/box.obj", 0.001);
+  const Vector3d centre(5e-3, 6e-3, 7e-3);
+  const double area[3] = {200e-6, 400e-6, 800e-6}, round[3] = {60e-3, 100e-3, 120e-3};
+  for (int k = 0; k < 3; ++k) {
+    const auto c = modelling::cross_section(mesh, Vector3d::Unit(k), centre);
+    ASSERT_TRUE(c.closed) << c.why_not;
+    EXPECT_EQ(c.loops.size(), 1u);
+    EXPECT_NEAR(c.area / area[k], 1, 1e-12);
+    EXPECT_NEAR(c.perimeter / round[k], 1, 1e-12);
+    EXPECT_NEAR((c.centre - centre).norm(), 0, 1e-15);
+    ASSERT_EQ(c.lines.size(), 2u) << "across axis " << k;
+    EXPECT_TRUE(has_line(c, Vector3d::Unit((k + 1) % 3), 1e-12));
+    EXPECT_TRUE(has_line(c, Vector3d::Unit((k + 2) % 3), 1e-12));
+    EXPECT_LT(c.best.relative, 1e-12);
+  }
+}
+
+TEST(ModelSection, TheUnequalLHasNoLineOfSymmetry) {
+  // tests/data/meshes/l-shape.obj on its plane of symmetry z = 0: the L
+  // itself, 600 + 300 = 900 mm^2, 200 mm round, centred at (21.667, 11.667)
+  // mm; legs of 60 and 30 mm: no line maps it onto itself. Cut across the
+  // upright leg at x = 5 mm: 40 x 8 = 320 mm^2, 96 mm round, centre (5, 20, 0).
+  const TriangleMesh mesh = modelling::read_mesh(AFFORD_SOURCE_DIR "/tests/data/meshes/l-shape.obj", 0.001);
+  const auto c = modelling::cross_section(mesh, Vector3d::UnitZ(), Vector3d(0.02, 0.01, 0));
+  ASSERT_TRUE(c.closed) << c.why_not;
+  EXPECT_NEAR(c.area / 900e-6, 1, 1e-12);
+  EXPECT_NEAR(c.perimeter / 200e-3, 1, 1e-12);
+  EXPECT_NEAR((c.centre - Vector3d(65e-3 / 3, 35e-3 / 3, 0)).norm(), 0, 1e-15);
+  EXPECT_TRUE(c.lines.empty());
+  EXPECT_GT(c.best.relative, modelling::kSymmetryTolerance);
+  const auto across = modelling::cross_section(mesh, Vector3d::UnitX(), Vector3d(5e-3, 0, 0));
+  ASSERT_TRUE(across.closed) << across.why_not;
+  EXPECT_NEAR(across.area / 320e-6, 1, 1e-12);
+  EXPECT_NEAR(across.perimeter / 96e-3, 1, 1e-12);
+  EXPECT_NEAR((across.centre - Vector3d(5e-3, 20e-3, 0)).norm(), 0, 1e-15);
+  EXPECT_EQ(across.lines.size(), 2u);
+}
+
+TEST(ModelSection, AnEqualLIsSymmetricAboutItsDiagonal) {
+  // Legs 40 x 10 and 10 x 30 mm from the corner (0, 0): 400 mm^2 at (20, 5)
+  // and 300 mm^2 at (5, 25): 700 mm^2 centred at (9500/700, 9500/700) mm,
+  // on the diagonal, its one line of symmetry. The diagonal plane cuts the
+  // corner square along its diagonal: 10 sqrt 2 x 8 mm = 113.14 mm^2.
+  const TriangleMesh mesh = read(prism({{0, 0}, {40, 0}, {40, 10}, {10, 10}, {10, 40}, {0, 40}}, -4, 4), "equal-l.obj");
+  const double at = 9.5e-3 / 0.7;
+  const auto c = modelling::cross_section(mesh, Vector3d::UnitZ(), Vector3d::Zero());
+  ASSERT_TRUE(c.closed) << c.why_not;
+  EXPECT_NEAR(c.area / 700e-6, 1, 1e-12);
+  EXPECT_NEAR((c.centre - Vector3d(at, at, 0)).norm(), 0, 1e-15);
+  ASSERT_EQ(c.lines.size(), 1u);
+  EXPECT_TRUE(has_line(c, Vector3d(1, 1, 0), 1e-12));
+  const auto diagonal = modelling::cross_section(mesh, Vector3d(1, -1, 0).normalized(), Vector3d(at, at, 0));
+  ASSERT_TRUE(diagonal.closed) << diagonal.why_not;
+  EXPECT_NEAR(diagonal.area / (10e-3 * std::sqrt(2.0) * 8e-3), 1, 1e-12);
+  EXPECT_NEAR(diagonal.perimeter / (2 * (10e-3 * std::sqrt(2.0) + 8e-3)), 1, 1e-12);
+}
+
+TEST(ModelSection, ASquareTubeHasAHoleAndFourLines) {
+  // A 30 mm cube with a 10 mm cube hollowed out of its middle (the inner
+  // box's triangles turned to face into the void): cut half way, the
+  // square ring of 900 - 100 = 800 mm^2, 120 + 40 mm round. Its equal
+  // moments send the search round every direction: four lines, along the
+  // sides and the diagonals.
+  Obj o = box({0, 0, 0}, {30, 30, 30});
+  const Obj inner = box({10, 10, 10}, {20, 20, 20});
+  const int offset = static_cast<int>(o.v.size());
+  for (const Vector3d& v : inner.v) o.v.push_back(v);
+  for (const auto& t : inner.f) o.f.push_back({t[0] + offset, t[2] + offset, t[1] + offset});
+  const TriangleMesh mesh = read(o, "hollow.obj");
+  const auto c = modelling::cross_section(mesh, Vector3d::UnitZ(), Vector3d(0, 0, 15e-3));
+  ASSERT_TRUE(c.closed) << c.why_not;
+  EXPECT_EQ(c.loops.size(), 2u);
+  EXPECT_NEAR(c.area / 800e-6, 1, 1e-12);
+  EXPECT_NEAR(c.perimeter / 160e-3, 1, 1e-12);
+  EXPECT_NEAR((c.centre - Vector3d(15e-3, 15e-3, 15e-3)).norm(), 0, 1e-15);
+  ASSERT_EQ(c.lines.size(), 4u);
+  for (const Vector3d& d : {Vector3d(1, 0, 0), Vector3d(0, 1, 0), Vector3d(1, 1, 0), Vector3d(1, -1, 0)}) {
+    EXPECT_TRUE(has_line(c, d, 1e-9)) << d.transpose();
+  }
+}
+
+TEST(ModelSection, AnOpenCutOrAMissedMeshSaysWhy) {
+  Obj o = box({0, 0, 0}, {40, 20, 10});
+  o.f.erase(o.f.begin());  // a side triangle, which the plane z = 5 mm cuts
+  const auto open = modelling::cross_section(read(o, "open-box.obj"), Vector3d::UnitZ(), Vector3d(0, 0, 5e-3));
+  EXPECT_FALSE(open.closed);
+  EXPECT_THAT(open.why_not, ::testing::HasSubstr("does not close (the mesh is open there)"));
+  EXPECT_TRUE(open.loops.empty());
+  const TriangleMesh whole = read(box({0, 0, 0}, {40, 20, 10}), "whole-box.obj");
+  const auto missed = modelling::cross_section(whole, Vector3d::UnitZ(), Vector3d(0, 0, 0.5));
+  EXPECT_FALSE(missed.closed);
+  EXPECT_EQ(missed.why_not, "the plane does not cut the mesh");
 }
 
 TEST(ModelMesh, WhereABoxAndAnLRest) {

@@ -82,6 +82,26 @@ ToolModel round_trip(const ObjectSpec& original, const TempDir& dir) {
 
 class RoundTrip : public ::testing::TestWithParam<std::string> {};
 
+TEST(ModelTool, ThePliersHandlesOuterFacesAreTheirContactPlanes) {
+  // objects/pliers.yaml: each handle a box 14 mm deep from the jaw's plane,
+  // the fixed one at y 0..14 mm, the moving one at y -14..0 mm in its arm's
+  // frame, along -140..-15 mm; the hand pushes on their outer faces over
+  // the emphasis, -130..-60 mm: y = 14 mm facing +y, y = -14 mm facing -y,
+  // through the emphasis's middle, -95 mm.
+  const ObjectSpec original = load_object(kSource + "/objects/pliers.yaml");
+  const TempDir dir("pliers-faces");
+  const ToolModel m = round_trip(original, dir);
+  const modelling::FacePlane& f = m.faces.fixed_contact;
+  const modelling::FacePlane& g = m.faces.moving_contact;
+  EXPECT_LT((f.normal - Vector3d::UnitY()).norm(), 1e-6);
+  EXPECT_LT((f.point - Vector3d(-0.095, 0.014, 0)).norm(), 1e-6);
+  EXPECT_LT((g.normal + Vector3d::UnitY()).norm(), 1e-6);
+  EXPECT_LT((g.point - Vector3d(-0.095, -0.014, 0)).norm(), 1e-6);
+  EXPECT_LT(f.rms, 1e-6);
+  EXPECT_NEAR(f.from, -0.130, 1e-9);
+  EXPECT_NEAR(f.to, -0.060, 1e-9);
+}
+
 TEST_P(RoundTrip, TheToolComesBackFromItsUrdf) {
   const ObjectSpec original = load_object(kSource + "/objects/" + GetParam() + ".yaml");
   const TempDir dir(GetParam());
@@ -103,6 +123,38 @@ TEST_P(RoundTrip, TheToolComesBackFromItsUrdf) {
   const double length = original.lever.arm.to - original.lever.arm.from;
   EXPECT_LT((m.centre_of_gravity - original.centre_of_gravity).norm(), 0.01 * length);
   EXPECT_EQ(m.parts.size(), original.parts.size());
+
+  // The interaction space from the shape. The shipped jaws are flat faces
+  // through the pivot, so at opening theta the gap at distance r is the
+  // wedge's, |r| sin theta (engine/derive.h takes L_is as that wedge at
+  // theta_max over the application region): the same to 1 um (the STL's
+  // single precision), and nothing where the jaws are closed.
+  const modelling::JawGaps& jaws = m.jaws;
+  ASSERT_EQ(jaws.gap.size(), static_cast<size_t>(modelling::kJawGapAngles));
+  EXPECT_NEAR(jaws.angles.front(), original.lever.theta_min, 0.5 * kDeg);
+  EXPECT_NEAR(jaws.angles.back(), original.lever.theta_max, 0.5 * kDeg);
+  EXPECT_NEAR(jaws.distances.front(), original.application.from, 1e-9);
+  EXPECT_NEAR(jaws.distances.back(), original.application.to, 1e-9);
+  for (size_t a = 0; a < jaws.angles.size(); ++a) {
+    for (size_t k = 0; k < jaws.distances.size(); ++k) {
+      EXPECT_NEAR(jaws.gap[a][k], std::abs(jaws.distances[k]) * std::sin(jaws.angles[a]), 1e-6)
+          << "opening " << jaws.angles[a] / kDeg << " deg at " << jaws.distances[k] * 1e3 << " mm";
+    }
+  }
+  EXPECT_NEAR(jaws.gap_from(), std::abs(original.application.from) * std::sin(original.lever.theta_max), 1e-6);
+  EXPECT_NEAR(jaws.gap_to(), std::abs(original.application.to) * std::sin(original.lever.theta_max), 1e-6);
+  EXPECT_NEAR(jaws.wedge_to, std::abs(original.application.to) * std::sin(original.lever.theta_max), 1e-9);
+
+  // The support plane: the fixed jaw's face, y = 0 facing +y (the object
+  // frame's convention), flat, over the application region.
+  const modelling::ContactPlanes& faces = m.faces;
+  ASSERT_TRUE(faces.support.found);
+  EXPECT_NEAR(faces.support.normal.y(), 1, 1e-9);
+  EXPECT_NEAR(faces.support.point.y(), 0, 1e-6);
+  EXPECT_LT(faces.support.rms, 1e-6);
+  EXPECT_NEAR(faces.support.from, original.application.from, 1e-9);
+  ASSERT_TRUE(faces.fixed_contact.found);
+  ASSERT_TRUE(faces.moving_contact.found);
 
   // The written file loads, and says the same.
   const std::string file = dir / "modelled.yaml";
@@ -206,6 +258,36 @@ TEST(ModelPartNet, AGarlicPressCrushesNearItsHinge) {
   EXPECT_NEAR(l.emphasis.to, 0.200, 1e-3);
 }
 
+TEST(ModelPartNet, AGarlicPressOpensWiderThanTheWedgeAtThePlungersEnd) {
+  // The plunger (20..60 mm, its face on the chamber's when closed) turns
+  // by 35 deg. Where the foot of the perpendicular from the chamber's face
+  // lands on the plunger (r cos 35 deg >= 20 mm) the gap is the wedge's,
+  // r sin 35 deg: 22.943 mm at 40 mm, 34.415 mm at 60 mm. At 20 mm it lands
+  // short of the plunger: the gap runs to the plunger's end, a chord of
+  // the turn, 2 * 20 mm * sin 17.5 deg = 12.029 mm, wider than the wedge's
+  // 11.472 mm that the object file's application and theta_max give. (The
+  // jaws found from surface samples start 2 um beyond 20 mm: the figures
+  // are worked at the distances used, by the law of cosines at the first.)
+  modelling::ToolModelOptions o;
+  o.name = "garlic-press";
+  o.density = 1000;
+  const ToolModel m =
+      modelling::model_tool(modelling::read_urdf_tool(kSource + "/tests/data/partnet/garlic-press/mobility.urdf"), o);
+  const modelling::JawGaps& j = m.jaws;
+  ASSERT_EQ(j.distances.size(), 9u);  // 20, 25, ..., 60 mm
+  const double r0 = j.distances[0];
+  EXPECT_NEAR(r0, 0.020, 1e-5);
+  EXPECT_NEAR(j.distances[8], 0.060, 1e-5);
+  EXPECT_NEAR(j.angles.back(), 35 * kDeg, 1e-9);
+  EXPECT_NEAR(j.gap.back()[0], 2 * 0.020 * std::sin(17.5 * kDeg), 1e-5);
+  EXPECT_NEAR(j.gap.back()[0], std::sqrt(r0 * r0 + 0.020 * 0.020 - 2 * r0 * 0.020 * std::cos(35 * kDeg)), 1e-9);
+  EXPECT_NEAR(j.gap.back()[4], j.distances[4] * std::sin(35 * kDeg), 1e-9);
+  EXPECT_NEAR(j.gap.back()[8], j.distances[8] * std::sin(35 * kDeg), 1e-9);
+  EXPECT_NEAR(j.wedge_from, r0 * std::sin(35 * kDeg), 1e-9);
+  EXPECT_GT(j.gap_from() - j.wedge_from, 0.5e-3);  // the real shape opens wider there than the wedge
+  for (const double g : j.gap.front()) EXPECT_NEAR(g, 0, 1e-9);  // closed: the faces meet
+}
+
 TEST(ModelPartNet, AFileWithoutASpringSaysHowToGetOne) {
   modelling::ToolModelOptions o;
   o.name = "stapler";
@@ -237,8 +319,8 @@ TEST(ModelPartNet, AFileWithoutASpringSaysHowToGetOne) {
 // A U-shaped channel's hull would fill its inside: it is cut into slabs; a
 // box is its own hull.
 TEST(ModelConvexParts, AChannelIsCutAndABoxIsNot) {
-  modelling::NamedMesh box{"box", modelling::box_mesh(Vector3d(0.1, 0.01, 0.01))};
-  modelling::NamedMesh channel{"channel", {}};
+  modelling::NamedMesh box{"box", modelling::box_mesh(Vector3d(0.1, 0.01, 0.01)), ""};
+  modelling::NamedMesh channel{"channel", {}, ""};
   for (double y : {-0.009, 0.009}) {  // two walls and a floor, along x
     modelling::append(channel.mesh, modelling::box_mesh(Vector3d(0.1, 0.002, 0.02)),
                       Eigen::Isometry3d(Eigen::Translation3d(0, y, 0)));

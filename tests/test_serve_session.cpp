@@ -13,12 +13,14 @@
 #include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
 
+#include "guides.h"
 #include "recording_source.h"
 #include "run.h"
 #include "server.h"
@@ -342,6 +344,115 @@ TEST(ServeSession, TakesAnActeeFromTheShelf) {
   later.start();
   later.stop();
   EXPECT_EQ(later.trials().front().number, 3);
+  fs::remove_all(out);
+}
+
+// The message of what `make` throws ("" when it does not).
+template <typename F>
+std::string thrown(F make) {
+  try {
+    make();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// --actees DIR: the user's actees on the shelf after the shipped ones, a
+// trial with one of them replays, and a mistake in the folder stops the
+// start, located.
+TEST(ServeSession, TheShelfHoldsTheUsersActees) {
+  const fs::path out = scratch("user-actees");
+  const fs::path mine = out / "my-actees";
+  fs::create_directories(mine);
+  {
+    std::ifstream egg(kSource + "/actees/egg.yaml");
+    std::ofstream quail(mine / "quail_egg.yaml");
+    for (std::string line; std::getline(egg, line);) {
+      quail << (line == "actee: egg" ? "actee: quail_egg" : line) << "\n";
+    }
+  }
+  ServeOptions o = options(out / "trials");
+  o.user_actees_dir = mine.string();
+  Server server(o);
+  const size_t shipped = actee_shelf(kSource + "/actees").size();
+  ASSERT_EQ(server.shelf().size(), shipped + 1);  // the shipped ones first
+  EXPECT_EQ(server.shelf().back().name, "quail_egg");
+  server.start();
+  Page page(server.port());
+  const std::optional<Json> scene = page.wait_type("scene");
+  ASSERT_TRUE(scene.has_value());
+  EXPECT_THAT((*scene)["shelf"].get<std::vector<std::string>>(), ::testing::Contains("quail_egg"));
+  server.advance(0.1);
+  command(server, page, {{"type", "actee"}, {"name", "quail_egg"}});
+  server.advance(0.1);
+  ASSERT_TRUE(page.wait_for([](const Json& j) { return j["type"] == "scene" && j["trial"] == 2; }).has_value());
+  server.stop();
+  ASSERT_EQ(server.trials().size(), 2u);
+  EXPECT_EQ(server.trials()[1].actee, "quail_egg");
+  replayed(server.trials()[1].recording);
+
+  // A mistake in a file of the folder: file:line:col at start.
+  {
+    std::ofstream bad(mine / "bad.yaml");
+    bad << "actee: bad\nshape: {sphere: {radius: 10 mm}}\nmass: 5 g\nyolk: yellow\n";
+  }
+  const std::string located = thrown([&] { Server s(o); });
+  EXPECT_THAT(located, HasSubstr((mine / "bad.yaml").string() + ":"));
+  EXPECT_THAT(located, HasSubstr("yolk"));
+  fs::remove(mine / "bad.yaml");
+  // A name a shipped actee has: both files named.
+  fs::copy_file(kSource + "/actees/egg.yaml", mine / "egg.yaml");
+  const std::string twice = thrown([&] { Server s(o); });
+  EXPECT_THAT(twice, HasSubstr((mine / "egg.yaml").string() + ": an actee named 'egg' is already on the shelf"));
+  // A folder that is not there.
+  o.user_actees_dir = (out / "nowhere").string();
+  EXPECT_THAT(thrown([&] { Server s(o); }), HasSubstr("nowhere: not a folder"));
+  fs::remove_all(out);
+}
+
+// The scene holds `afford guide`'s guides of the tool: the same guides,
+// primitives and numbers as compute_guides, which `afford guide` prints.
+TEST(ServeSession, TheSceneHoldsTheGuides) {
+  const fs::path out = scratch("guides");
+  Server server(options(out));
+  server.start();
+  Page page(server.port());
+  const std::optional<Json> scene = page.wait_type("scene");
+  ASSERT_TRUE(scene.has_value());
+  server.stop();
+  const Json& g = (*scene)["guides"];
+  ASSERT_TRUE(g.is_object()) << g.dump();
+  const CompiledSession session = load_session(kSource + "/sessions/paper-tongs.yaml");
+  const Guides expected = compute_guides(session.model, load_guides(kSource + "/rules/guides.yaml"));
+  ASSERT_EQ(g["guides"].size(), expected.guides.size());
+  for (size_t i = 0; i < expected.guides.size(); ++i) {
+    EXPECT_EQ(g["guides"][i]["name"], expected.guides[i].name);
+    EXPECT_EQ(g["guides"][i]["kind"], guide_kind_name(expected.guides[i].kind));
+  }
+  std::vector<std::string> kinds;
+  for (const GuideSpec& s : expected.guides) kinds.push_back(guide_kind_name(s.kind));
+  EXPECT_THAT(kinds, ::testing::IsSupersetOf({"symmetry_plane", "interaction_space", "emphasis", "advantage"}));
+  EXPECT_EQ(g["rects"].size(), expected.rects.size());
+  EXPECT_EQ(g["meshes"].size(), expected.meshes.size());
+  EXPECT_EQ(g["segments"].size(), expected.segments.size());
+  EXPECT_GT(g["rects"].size() + g["meshes"].size() + g["segments"].size(), 0u);
+  const GuideFacts& f = expected.facts;
+  const Json& facts = g["facts"];
+  EXPECT_EQ(facts["pattern"], pattern_name(f.pattern));
+  EXPECT_EQ(facts["interaction_space"]["from"].get<double>(), f.space.from);
+  EXPECT_EQ(facts["interaction_space"]["to"].get<double>(), f.space.to);
+  EXPECT_EQ(facts["interaction_space"]["gap_from"].get<double>(), f.space.gap_from);
+  EXPECT_EQ(facts["interaction_space"]["gap_to"].get<double>(), f.space.gap_to);
+  EXPECT_EQ(facts["emphasis"]["from"].get<double>(), f.emphasis_from);
+  EXPECT_EQ(facts["emphasis"]["to"].get<double>(), f.emphasis_to);
+  EXPECT_EQ(facts["advantage"]["ma_min"].get<double>(), f.ma_min);
+  EXPECT_EQ(facts["advantage"]["ma_max"].get<double>(), f.ma_max);
+  EXPECT_EQ(facts["symmetry_plane"]["normal"][2].get<double>(), f.symmetry_normal.z());
+  for (size_t i = 0; i < expected.segments.size(); ++i) {
+    EXPECT_EQ(g["segments"][i]["value"].get<double>(), expected.segments[i].value);
+    EXPECT_EQ(g["segments"][i]["frame"], expected.segments[i].frame == Arm::moving ? "moving" : "fixed");
+  }
   fs::remove_all(out);
 }
 

@@ -72,6 +72,7 @@ TEST(ServeView, ARecordingBecomesTheScenesStatesAndEvents) {
   EXPECT_EQ(doc["identical"], true);
   EXPECT_EQ(doc["scene"]["type"], "scene");
   EXPECT_EQ(doc["scene"]["actee_name"], "egg");
+  EXPECT_GT(doc["scene"]["guides"]["guides"].size(), 0u);  // the guides of afford guide, drawn in the view too
   // About 60 states a second of session time, in time order, plus the frames with events.
   const Json& states = doc["states"];
   EXPECT_GE(states.size(), static_cast<size_t>(run.end_time * 58));

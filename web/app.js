@@ -15,6 +15,9 @@ const viewing = new URLSearchParams(location.search).has('view');  // afford vie
 const measured = { frames: 0, latencies: [], pending: null };
 window.affordPage = {
   measured,
+  dragging: () => drag !== null,
+  guides: () => ({ shown: guideGroups.fixed.visible, drawn: guideGroups.fixed.children.length + guideGroups.moving.children.length,
+    legend: $('guides-legend').textContent }),
   thumbOnScreen: () => (tips[0] ? toScreen(tips[0].position) : null),
   thumbClosingOnScreen: () => (tips[0] && state ? thumbClosingOnScreen() : null),
   toolOnScreen: () => (state ? toScreen(new THREE.Vector3().setFromMatrixPosition(new THREE.Matrix4().fromArray(state.object))) : null),
@@ -85,9 +88,72 @@ function resetView() {
   controls.update();
 }
 
+// The guides of `afford guide` (the scene's `guides`, serve/guides_message.h):
+// each primitive hung on the arm whose frame it is in, so it follows the
+// tool; the "guides" box shows or hides them.
+const guideGroups = { fixed: new THREE.Group(), moving: new THREE.Group() };
+function guideMaterial(c) {
+  return new THREE.MeshBasicMaterial({ color: new THREE.Color(c[0], c[1], c[2]), transparent: true, opacity: c[3],
+    side: THREE.DoubleSide, depthWrite: false });
+}
+function triangles(points, material) {  // a flat list of [x, y, z], three a triangle
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.Float32BufferAttribute(points.flat(), 3));
+  return new THREE.Mesh(g, material);
+}
+function buildGuides(g) {
+  clear(guideGroups.fixed);
+  clear(guideGroups.moving);
+  fixedArm.add(guideGroups.fixed);
+  movingArm.add(guideGroups.moving);
+  const legend = $('guides-legend');
+  legend.innerHTML = '';
+  if (!g) return;
+  const at = (c, u, su, v, sv) => [0, 1, 2].map((i) => c[i] + u[i] * su + v[i] * sv);
+  for (const r of g.rects) {
+    const [c, u, v, hu, hv] = [r.centre, r.u, r.v, r.half_u, r.half_v];
+    const p = [at(c, u, -hu, v, -hv), at(c, u, hu, v, -hv), at(c, u, hu, v, hv), at(c, u, -hu, v, hv)];
+    guideGroups[r.frame].add(triangles([p[0], p[1], p[2], p[0], p[2], p[3]], guideMaterial(r.colour)));
+  }
+  for (const m of g.meshes) {
+    guideGroups[m.frame].add(triangles(m.triangles.flatMap((t) => t.map((i) => m.vertices[i])), guideMaterial(m.colour)));
+  }
+  for (const frame of ['fixed', 'moving']) {  // the advantage map: one coloured line per step along an arm
+    const segments = g.segments.filter((s) => s.frame === frame);
+    if (!segments.length) continue;
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.Float32BufferAttribute(segments.flatMap((s) => [...s.a, ...s.b]), 3));
+    geometry.setAttribute('color', new THREE.Float32BufferAttribute(
+      segments.flatMap((s) => [...s.colour.slice(0, 3), ...s.colour.slice(0, 3)]), 3));
+    guideGroups[frame].add(new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors })));
+  }
+  const mm = (m) => `${(m * 1000).toFixed(0)} mm`;
+  const f = g.facts;
+  const facts = {
+    interaction_space: `from ${mm(f.interaction_space.from)} to ${mm(f.interaction_space.to)} along the arm`,
+    emphasis: `push from ${mm(f.emphasis.from)} to ${mm(f.emphasis.to)} along the arms`,
+    advantage: `mechanical advantage over the emphasis ${f.advantage.ma_min.toFixed(2)} to ${f.advantage.ma_max.toFixed(2)}`,
+    symmetry_plane: `lever ${f.pattern}`,
+  };
+  for (const s of g.guides) {
+    const d = document.createElement('div');
+    d.className = 'guide';
+    const c = s.colour.slice(0, 3).map((x) => Math.round(x * 255));
+    d.innerHTML = `<span class="swatch" style="background: rgb(${c.join(',')})"></span> <b></b>: <span></span>`;
+    d.children[1].textContent = s.name;
+    d.children[2].textContent = `${s.description} ${facts[s.kind] ? `(${facts[s.kind]})` : ''}`;
+    legend.appendChild(d);
+  }
+}
+function showGuides(on) {
+  guideGroups.fixed.visible = guideGroups.moving.visible = on;
+}
+
 let scene = null;  // the last scene message
 function buildScene(s) {
   scene = s;
+  clear(guideGroups.fixed);
+  clear(guideGroups.moving);
   clear(fixedArm);
   clear(movingArm);
   clear(acteeBody);
@@ -103,6 +169,7 @@ function buildScene(s) {
     acteeMaterial = new THREE.MeshStandardMaterial({ color: acteeColour, roughness: 0.7 });
     acteeBody.add(meshOf(s.actee, acteeMaterial));
   }
+  buildGuides(s.guides);
   for (const t of tips) scene3.remove(t);
   tips.length = 0;
   s.fingertip_radius.forEach((r, i) => {
@@ -287,6 +354,7 @@ $('grasp').onclick = () => send({ type: 'grasp' });
 $('release').onclick = () => send({ type: 'release' });
 $('reset').onclick = () => send({ type: 'reset' });
 $('view-reset').onclick = resetView;
+$('guides-on').onchange = (e) => showGuides(e.target.checked);
 
 window.addEventListener('keydown', (e) => {
   const k = e.key;

@@ -1,13 +1,13 @@
 // The page of `afford serve` and `afford view` in a real browser: headless
 // Chromium (chromium.h) opens the page, takes the egg from the shelf,
-// grasps, presses the thumb harder until "crash" is inferred, and the explanation
+// grasps, drags the thumb with the mouse until "crash" is inferred, and the explanation
 // it shows is the one `afford run` prints; a screenshot shows the tool;
 // `afford view` of the trial's recording lists the events. Skips where
 // Chromium is not installed.
 //
 // Measured and printed, not asserted (speed belongs to benchmarks): the
 // frames per second the page draws while the server runs its 1 kHz loop
-// with a second page watching, the time from a thumb command to the force bar
+// with a second page watching, the time from a drag move to the force bar
 // showing the state that applied it, and the server's deadline misses.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <thread>
 
@@ -38,10 +39,11 @@ std::string skip_reason() {
          "tested in a browser";
 }
 
-// The centre of an element, CSS pixels.
+// The centre of an element, CSS pixels, scrolled into view first (the side panel scrolls).
 bool centre_of(Chromium& c, const std::string& session, const std::string& selector, double* x, double* y) {
   const Json r = c.evaluate(session, "(() => { const e = document.querySelector(" + Json(selector).dump() +
-                                         "); if (!e) return null; const b = e.getBoundingClientRect(); "
+                                         "); if (!e) return null; e.scrollIntoView({ block: 'center' }); "
+                                         "const b = e.getBoundingClientRect(); "
                                          "return [b.left + b.width / 2, b.top + b.height / 2]; })()");
   if (!r.is_array()) return false;
   *x = r[0].get<double>();
@@ -117,9 +119,21 @@ TEST(Browser, DrivesThePaperTongsToACrashAndViewsTheRecording) {
                                         "!document.querySelector('#shelf button').disabled", kPatience))
       << "the page did not become the driver: " << chromium.error();
 
+  step("the guides");
+  // The guides of `afford guide` drawn on the tool, with their legend; the box hides and shows them.
+  ASSERT_TRUE(chromium.wait_until(page, "affordPage.guides().drawn > 0 && affordPage.guides().shown", kPatience))
+      << chromium.evaluate(page, "JSON.stringify(affordPage.guides())");
+  const Json legend = chromium.evaluate(page, "affordPage.guides().legend");
+  EXPECT_THAT(legend.dump(), ::testing::HasSubstr("along the arm")) << legend.dump();
+  double x = 0, y = 0;
+  ASSERT_TRUE(centre_of(chromium, page, "#guides-on", &x, &y));
+  chromium.click(page, x, y);
+  EXPECT_TRUE(chromium.wait_until(page, "!affordPage.guides().shown", kPatience));
+  chromium.click(page, x, y);
+  EXPECT_TRUE(chromium.wait_until(page, "affordPage.guides().shown", kPatience));
+
   step("taking the egg");
   // The egg from the shelf: a new trial.
-  double x = 0, y = 0;
   int egg_button = 0;  // 1-based, as :nth-child counts
   for (size_t i = 0; i < server.shelf().size(); ++i) {
     if (server.shelf()[i].name == "egg") egg_button = static_cast<int>(i) + 1;
@@ -135,20 +149,40 @@ TEST(Browser, DrivesThePaperTongsToACrashAndViewsTheRecording) {
   chromium.click(page, x, y);
   ASSERT_TRUE(chromium.wait_until(page, "document.getElementById('readout').textContent.includes('grasped')", kPatience));
 
-  step("pressing the thumb harder");
-  // The thumb, pressed harder by the keyboard (up arrow: 2 mm a press), a
-  // press at a time, each waiting for the state that applied it, until
-  // "crash". (A mouse drag on the thumb is not used here: in headless
-  // Chromium the press on the thumb's sphere is not picked; see serve/README.md.)
+  step("dragging the thumb");
+  // The thumb, dragged with the mouse along the screen image of its closing
+  // direction, 2 mm of squeeze a move, each move waiting for the state that
+  // applied it, until "crash".
+  const Json thumb = chromium.evaluate(page, "affordPage.thumbOnScreen()");
+  const Json closing = chromium.evaluate(page, "affordPage.thumbClosingOnScreen()");
+  ASSERT_TRUE(thumb.is_object() && closing.is_object()) << thumb.dump() << " " << closing.dump();
+  const double tx = thumb["x"], ty = thumb["y"];
+  const double dx = closing["dir"]["x"], dy = closing["dir"]["y"], per_metre = closing["pixelsPerMetre"];
+  chromium.mouse(page, "mousePressed", tx, ty);
+  ASSERT_TRUE(chromium.wait_until(page, "affordPage.dragging()", 5))
+      << "the press at the thumb (" << tx << ", " << ty << ") did not start a drag";
   bool crashed = false;
   for (int i = 1; i <= 30 && !crashed; ++i) {
-    chromium.key(page, "ArrowUp", 38);
+    const double along = i * 0.002 * per_metre;  // pixels
+    chromium.mouse(page, "mouseMoved", tx + along * dx, ty + along * dy);
     ASSERT_TRUE(chromium.wait_until(page, "affordPage.measured.pending === null", kPatience))
-        << "press " << i << ": no state applied it: " << chromium.evaluate(page, "JSON.stringify(affordPage.measured)");
+        << "move " << i << ": no state applied it: " << chromium.evaluate(page, "JSON.stringify(affordPage.measured)");
     crashed = chromium.wait_until(
         page, "Array.from(document.querySelectorAll('#events .fn')).some((e) => e.textContent === 'crash')", 0.3);
   }
-  ASSERT_TRUE(crashed) << "no crash inferred after 60 mm of squeeze";
+  chromium.mouse(page, "mouseReleased", tx, ty);
+  ASSERT_TRUE(crashed) << "no crash inferred after 60 mm of drag";
+  const Json drag_latencies = chromium.evaluate(page, "affordPage.measured.latencies");
+  ASSERT_TRUE(drag_latencies.is_array());
+  const std::vector<double> ms = drag_latencies.get<std::vector<double>>();
+  ASSERT_FALSE(ms.empty());
+
+  step("easing off with the keyboard");
+  // The keyboard path too: a down arrow eases off 2 mm, applied by a state.
+  chromium.key(page, "ArrowDown", 40);
+  ASSERT_TRUE(chromium.wait_until(page, "affordPage.measured.latencies.length === " + std::to_string(ms.size() + 1),
+                                  kPatience))
+      << "the down arrow was not applied";
   step("opening a second page");
   // A second page watches.
   const std::string watcher = chromium.open(server.url());
@@ -167,10 +201,6 @@ TEST(Browser, DrivesThePaperTongsToACrashAndViewsTheRecording) {
   const double fps = (after[0].get<double>() - before[0].get<double>()) /
                      ((after[1].get<double>() - before[1].get<double>()) / 1000);
 
-  const Json latencies = chromium.evaluate(page, "affordPage.measured.latencies");
-  ASSERT_TRUE(latencies.is_array());
-  const std::vector<double> ms = latencies.get<std::vector<double>>();
-  ASSERT_FALSE(ms.empty());
 
   step("taking a screenshot");
   // A screenshot shows the tool (bright pixels around the pivot, where the
@@ -181,6 +211,7 @@ TEST(Browser, DrivesThePaperTongsToACrashAndViewsTheRecording) {
   ASSERT_GT(shot.width, 0) << chromium.error();
   const int bright = bright_pixels(shot, tool["x"], tool["y"], 60);
   if (bright <= 100) render::write_png(::testing::TempDir() + "afford-browser-shot.png", shot);
+  if (const char* keep = std::getenv("AFFORD_BROWSER_SHOT")) render::write_png(keep, shot);  // to look at the page
   EXPECT_GT(bright, 100) << "at " << tool.dump() << " (the screenshot: " << ::testing::TempDir() << "afford-browser-shot.png)";
 
   const Json shown = events_list(chromium, page);
@@ -201,7 +232,7 @@ TEST(Browser, DrivesThePaperTongsToACrashAndViewsTheRecording) {
   }
   std::printf("[ measured ] the page drew %.1f frames/s while the server ran its 1 kHz loop (a second page "
               "watching)\n", fps);
-  std::printf("[ measured ] from a thumb command (key press) to the force bar: median %.1f ms, max %.1f ms over %zu presses\n", median(ms),
+  std::printf("[ measured ] from a drag move of the thumb to the force bar: median %.1f ms, max %.1f ms over %zu moves\n", median(ms),
               *std::max_element(ms.begin(), ms.end()), ms.size());
   std::printf("[ measured ] the server's frames that missed their deadline (two pages, egg trial): %lld of %lld "
               "(latest %.3f ms)\n", static_cast<long long>(egg.deadline_misses), static_cast<long long>(egg.frames),
@@ -223,6 +254,7 @@ TEST(Browser, DrivesThePaperTongsToACrashAndViewsTheRecording) {
   ASSERT_TRUE(chromium.wait_until(view, "document.querySelectorAll('#events li').length === " +
                                             std::to_string(egg.inferences.size()), kPatience))
       << chromium.error();
+  EXPECT_TRUE(chromium.wait_until(view, "affordPage.guides().drawn > 0", kPatience)) << "no guides in the view";
   const Json viewed = events_list(chromium, view);
   for (size_t i = 0; i < egg.inferences.size(); ++i) {
     EXPECT_EQ(viewed[i]["fn"], egg.inferences[i].function);

@@ -68,6 +68,20 @@ case $case in
     expect 0 "^recorded 4000 frames to" "$afford" run $session --out "$work/o" --record "$work/notes.afrec" --force
     expect 0 "4000 frames, ended cleanly" "$afford" replay "$work/notes.afrec"
     ;;
+  mp4)
+    # ffmpeg's MP4 is an output like the others: a foreign one is refused
+    # before any frame is drawn; afford's own is replaced, no temporary left.
+    mkdir "$work/o"
+    echo "my film" > "$work/o/session.mp4"
+    expect 1 "session.mp4: exists and afford did not write it" \
+      "$afford" render $session --out "$work/o" --fps 5 --size 160x120
+    [ "$(cat "$work/o/session.mp4")" = "my film" ] || fail "the foreign MP4 was replaced"
+    [ -z "$(ls "$work/o" | grep frame_)" ] || fail "frames were drawn before the refusal"
+    expect 0 "session.mp4" "$afford" render $session --out "$work/o" --fps 5 --size 160x120 --force
+    expect 0 "session.mp4" "$afford" render $session --out "$work/o" --fps 5 --size 160x120
+    [ "$(head -c 8 "$work/o/session.mp4" | tail -c 4)" = "ftyp" ] || fail "session.mp4 is not an MP4"
+    [ -z "$(ls -A "$work/o" | grep '^\.session')" ] || fail "a temporary file was left: $(ls -A "$work/o")"
+    ;;
   rerun_same_folder)
     # afford's own files are replaced without --force; no temporary file is left.
     expect 0 "^wrote .*trace.csv" "$afford" run $session --out "$work/o" --record "$work/r.afrec"
@@ -125,6 +139,10 @@ case $case in
     # afford model --out: never over its input, a foreign file only with --force.
     model="model tests/data/urdf/two-arms/mobility.urdf --mass 100 --application 60,90 --emphasis 0,20"
     expect 1 "mobility.urdf: one of this command's inputs" "$afford" $model --out tests/data/urdf/two-arms/mobility.urdf --force
+    mesh=tests/data/urdf/two-arms/textured_objs/fixed-arm.obj  # a mesh the URDF names is an input too
+    before=$(cksum < $mesh)
+    expect 1 "fixed-arm.obj: one of this command's inputs" "$afford" $model --out $mesh --force
+    [ "$(cksum < $mesh)" = "$before" ] || fail "the URDF's mesh was changed"
     echo "mine" > "$work/o.yaml"
     expect 1 "o.yaml: exists and afford did not write it" "$afford" $model --out "$work/o.yaml"
     [ "$(cat "$work/o.yaml")" = "mine" ] || fail "the foreign file was replaced"
