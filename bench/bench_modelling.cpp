@@ -49,8 +49,8 @@ void BM_ModelTwoPartTool(benchmark::State& state) {
   const TriangleMesh arm = ellipsoid_mesh({0.100, 0.008, 0.008}, 99, 256);  // 50,176 triangles
   afford::modelling::append(tool.fixed, arm, Eigen::Isometry3d(Eigen::Translation3d(0.100, -0.008, 0)));
   afford::modelling::append(tool.moving, arm, Eigen::Isometry3d(Eigen::Translation3d(0.100, 0.008, 0)));
-  tool.fixed_pieces.push_back({"fixed", tool.fixed});
-  tool.moving_pieces.push_back({"moving", tool.moving});
+  tool.fixed_pieces.push_back({"fixed", tool.fixed, ""});
+  tool.moving_pieces.push_back({"moving", tool.moving, ""});
   afford::modelling::ToolModelOptions options;
   options.name = "bench";
   options.density = 7850;
