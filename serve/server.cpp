@@ -13,6 +13,7 @@
 #include "recording.h"
 #include "scene_message.h"
 #include "trace.h"
+#include "web_server.h"
 
 namespace afford::serve {
 
@@ -43,11 +44,6 @@ int ws_data(mg_connection* conn, int flags, char* data, size_t size, void* serve
   return static_cast<Server*>(server)->on_data(conn, flags, data, size);
 }
 void ws_close(const mg_connection* conn, void* server) { static_cast<Server*>(server)->on_close(conn); }
-
-int log_message(const mg_connection*, const char* message) {
-  std::fprintf(stderr, "afford serve: web server: %s\n", message);
-  return 1;
-}
 
 }  // namespace
 
@@ -213,44 +209,18 @@ Server::~Server() { stop(); }
 std::string Server::url() const { return "http://" + options_.bind + ":" + std::to_string(port_) + "/"; }
 
 void Server::start() {
-  if (!fs::is_regular_file(fs::path(web_dir_) / "index.html")) {
-    throw std::runtime_error("the page's files are not in " + web_dir_ + " (no index.html)");
-  }
-  if (!fs::is_regular_file(fs::path(options_.three_dir) / "build" / "three.module.js")) {
-    std::fprintf(stderr,
-                 "afford serve: warning: three.js is not in %s (Debian's libjs-three): the page cannot draw the "
-                 "scene\n",
-                 options_.three_dir.c_str());
-  }
-  mg_init_library(0);
-  const std::string ports = options_.bind + ":" + std::to_string(options_.port);
-  const std::string threads = std::to_string(options_.max_pages + 8);
-  const std::string three = "/three/=" + options_.three_dir + "/";  // /three/x is three_dir/x
-  const char* config[] = {"document_root", web_dir_.c_str(), "listening_ports", ports.c_str(), "num_threads",
-                          threads.c_str(), "enable_directory_listing", "no", "url_rewrite_patterns", three.c_str(),
-                          "websocket_timeout_ms", "86400000", "request_timeout_ms", "10000", nullptr};
-  mg_callbacks callbacks{};
-  callbacks.log_message = log_message;
-  mg_init_data init{&callbacks, this, config};
-  char text[256] = "";
-  unsigned code = 0;
-  mg_error_data error{&code, text, sizeof text};
-  ctx_ = mg_start2(&init, &error);
-  if (ctx_ == nullptr) {
-    mg_exit_library();
-    throw std::runtime_error("cannot serve on " + ports + ": " + (text[0] ? text : "the web server did not start"));
-  }
+  const StartedWebServer started = start_web_server(
+      {.command = "afford serve", .web_dir = web_dir_, .three_dir = options_.three_dir, .bind = options_.bind,
+       .port = options_.port, .threads = options_.max_pages + 8, .websocket = true});
+  ctx_ = started.ctx;
+  port_ = started.port;
   mg_set_websocket_handler(ctx_, "/ws", ws_connect, ws_ready, ws_data, ws_close, this);
-  mg_server_port listening[4]{};
-  const int n = mg_get_server_ports(ctx_, 4, listening);
-  port_ = n > 0 ? listening[0].port : options_.port;
   try {
     next_trial_ = next_trial(out_dir_, options_.participant);
     first_trial_ = begin_trial(-1);
   } catch (...) {
-    mg_stop(ctx_);
+    stop_web_server(ctx_);
     ctx_ = nullptr;
-    mg_exit_library();
     throw;
   }
   sender_thread_ = std::thread([this] { sender_loop(); });
@@ -270,11 +240,8 @@ void Server::stop() {
     post_cv_.notify_all();
   }
   if (sender_thread_.joinable()) sender_thread_.join();
-  if (ctx_ != nullptr) {
-    mg_stop(ctx_);
-    ctx_ = nullptr;
-    mg_exit_library();
-  }
+  stop_web_server(ctx_);
+  ctx_ = nullptr;
   finished_.store(true);
   std::lock_guard lock(finish_mutex_);
   finish_cv_.notify_all();
