@@ -10,7 +10,29 @@ namespace {
 constexpr double kWindow = 0.025;  // s, each side
 constexpr int kDegree = 6;
 
+// The polynomial's design over an evenly spaced window of 2m + 1 samples,
+// times scaled by the half width h = m dt for conditioning.
+Eigen::MatrixXd even_design(size_t m, int degree) {
+  const long w = static_cast<long>(2 * m + 1);
+  Eigen::MatrixXd a(w, degree + 1);
+  for (long j = 0; j < w; ++j) {
+    const double u = static_cast<double>(j - static_cast<long>(m)) / static_cast<double>(m);
+    double p = 1;
+    for (int k = 0; k <= degree; ++k, p *= u) a(j, k) = p;
+  }
+  return a;
+}
+
 }  // namespace
+
+std::vector<double> acceleration_weights(size_t half_width, int degree, double dt) {
+  const Eigen::MatrixXd a = even_design(half_width, degree);
+  const Eigen::MatrixXd even = (a.transpose() * a).inverse() * a.transpose();
+  const double h = static_cast<double>(half_width) * dt;
+  std::vector<double> w(static_cast<size_t>(a.rows()));
+  for (size_t j = 0; j < w.size(); ++j) w[j] = 2 * even(2, static_cast<long>(j)) / (h * h);
+  return w;
+}
 
 double white_noise(const std::vector<double>& y) {
   std::vector<double> d2;
@@ -32,6 +54,7 @@ Derivatives local_derivatives(const std::vector<double>& t, const std::vector<do
   d.accel.resize(n);
   d.misfit.resize(n);
   d.half_width = m;
+  d.degree = degree;
   const long w = static_cast<long>(2 * m + 1);
   // The fit's coefficients as weights on the window's samples, for a
   // window of evenly spaced samples (most are): one dot product a sample.
@@ -44,11 +67,7 @@ Derivatives local_derivatives(const std::vector<double>& t, const std::vector<do
     }
   };
   const double even_h = static_cast<double>(m) * dt;
-  for (long j = 0; j < w; ++j) {
-    const double u = static_cast<double>(j - static_cast<long>(m)) * dt / even_h;
-    double p = 1;
-    for (int k = 0; k <= degree; ++k, p *= u) a(j, k) = p;
-  }
+  a = even_design(m, degree);
   const Eigen::MatrixXd cov = (a.transpose() * a).inverse();
   const Eigen::MatrixXd even = cov * a.transpose();  // coefficients = even * window
   d.rate_noise_gain = degree >= 1 ? std::sqrt(cov(1, 1)) / even_h : 0.0;

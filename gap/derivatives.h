@@ -14,6 +14,7 @@ struct Derivatives {
   std::vector<double> rate;   // dy/dt
   std::vector<double> accel;  // d2y/dt2
   size_t half_width = 0;      // samples each side of the fit: nearer the ends it is one-sided
+  int degree = 0;             // the polynomial's
   double rate_noise_gain = 0; // the rate's noise per unit of y's (white) noise, 1/s, inside
   double accel_noise_gain = 0; // the acceleration's, 1/s^2
   // The RMS of y about the polynomial over each sample's window, y's unit:
@@ -30,6 +31,11 @@ struct Derivatives {
 // signal hardly adds to; their median absolute value (times 1.4826 for a
 // normal law) is not moved by a few jumps (a stop, a reversal, a crack).
 double white_noise(const std::vector<double>& y);
+
+// The weights on an evenly spaced window of 2 half_width + 1 samples, dt
+// apart, that give the degree-`degree` polynomial's acceleration at its
+// middle (1/s^2).
+std::vector<double> acceleration_weights(size_t half_width, int degree, double dt);
 
 // `t` increasing, the same length as `y`, at least 2 samples.
 Derivatives local_derivatives(const std::vector<double>& t, const std::vector<double>& y);

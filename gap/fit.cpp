@@ -207,12 +207,13 @@ Fitter::Sums Fitter::accumulate(const std::vector<size_t>& on, const std::vector
     const std::vector<size_t>& fitted = fitted_[i];
     const std::vector<double>& w = r.weight;
     for (size_t c = 0; c < linear.size(); ++c) {
-      const double sd = linear[c] == EffectKind::arm_inertia     ? r.accel_noise
-                        : linear[c] == EffectKind::viscous_damping ? r.rate_noise
-                                                                   : 0.0;
-      const double per_sample = sd * r.to_newtons * sd * r.to_newtons;
       double& sum = out.inflation[static_cast<Eigen::Index>(c)];
-      for (size_t s : fitted) sum += w[s] * per_sample;
+      for (size_t s : fitted) {
+        const double sd = linear[c] == EffectKind::arm_inertia     ? r.accel_noise[s]
+                          : linear[c] == EffectKind::viscous_damping ? r.rate_noise
+                                                                     : 0.0;
+        sum += w[s] * sd * r.to_newtons * sd * r.to_newtons;
+      }
     }
     // The normal equations' sums, each added up sample after sample in the
     // order of the traces.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "derivatives.h"
+#include "smooth_acceleration.h"
 #include "state.h"
 #include "terms.h"
 
@@ -26,9 +27,11 @@ Derivatives differentiate(Replay& r, double resolution) {
   Derivatives d = local_derivatives(r.t, r.x);
   r.x_noise = std::max(white_noise(r.x), resolution);
   r.rate_noise = r.x_noise * d.rate_noise_gain;
-  r.accel_noise = r.x_noise * d.accel_noise_gain;
+  SmoothAcceleration a = smooth_acceleration(r.t, r.x, r.x_noise, d);
+  r.accel_noise = std::move(a.noise_gain);
+  for (double& v : r.accel_noise) v *= r.x_noise;
   r.rate = std::move(d.rate);
-  r.accel = std::move(d.accel);
+  r.accel = std::move(a.accel);
   return d;
 }
 
@@ -255,8 +258,13 @@ void weigh(std::vector<Replay>& replays, double noise) {
   for (Replay& r : replays) {
     r.weight.resize(r.t.size());
     for (size_t i = 0; i < r.t.size(); ++i) {
-      const double through = r.slope[i] * r.x_noise * r.to_newtons;  // N
-      r.weight[i] = sensor / (sensor + through * through);
+      // The angle's noise reaches the prediction through the slope and,
+      // differentiated twice, through the arm's inertia: where the
+      // acceleration keeps a narrow window (a trace's ends, a fast motion)
+      // a heavy arm passes far more of it.
+      const double through = r.slope[i] * r.x_noise * r.to_newtons;                  // N
+      const double through_inertia = r.inertia * r.accel_noise[i] * r.to_newtons;  // N
+      r.weight[i] = sensor / (sensor + through * through + through_inertia * through_inertia);
     }
   }
 }
@@ -286,6 +294,7 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
     r.x = trace[Signal::angle];
     const Derivatives d = differentiate(r, trace.resolution[static_cast<size_t>(Signal::angle)]);
     r.to_newtons = 1 / b;
+    r.inertia = model.arm_inertia;
     r.resolution = trace.resolution[static_cast<size_t>(Signal::effort_force)];
     const size_t n = r.t.size();
     r.measured.resize(n);

@@ -48,8 +48,14 @@ struct Replay {
   // motion's adds to it.
   std::vector<double> weight;
   // The motion sensor's noise (deviation, from x's second differences) and
-  // what the differentiation makes of it in the rate and the acceleration.
-  double x_noise = 0, rate_noise = 0, accel_noise = 0;
+  // what the differentiation makes of it in the rate and, sample by sample
+  // (its window is the data's choice: smooth_acceleration.h), the
+  // acceleration.
+  double x_noise = 0, rate_noise = 0;
+  std::vector<double> accel_noise;
+  // kg*m^2: the nominal arm's inertia, through which the acceleration's
+  // noise reaches the prediction (0 between plates).
+  double inertia = 0;
   // The main signal's printed resolution (trace.h's, in N at the effort):
   // the least noise a measurement can have.
   double resolution = 0;

@@ -74,7 +74,7 @@ fs::path write_case(const fs::path& out, const Case& c, const std::vector<std::v
   }
   const fs::path yaml = dir / (c.name + ".yaml");
   std::ofstream m(yaml);
-  char line[256];
+  char line[400];
   m << "measurement: " << c.name << "\nobject: " << c.tool.file << "\n";
   std::snprintf(line, sizeof line, "effort_at: %.9g mm\n", c.tool.effort_sign * c.tool.effort_at * 1000);
   m << line;
@@ -93,7 +93,14 @@ fs::path write_case(const fs::path& out, const Case& c, const std::vector<std::v
     m << line;
   }
   m << "traces: [" << list << "]\n";
-  std::ofstream(out / "labels" / (c.name + ".txt")) << label_of(c) << "\n";
+  // The label, and the hidden sizes for whoever studies a case afterwards
+  // (the scorer reads the first word only).
+  const Truth& t = c.truth;
+  std::snprintf(line, sizeof line,
+                "friction %.4g N*m, damping %.4g N*m*s/rad, preload %.4g N*m, cubic %.4g N/m^3, inertia %.4g kg*m^2, "
+                "weight %.4g N*m, latency %.4g s, actee exponent %.4g\n",
+                t.friction, t.damping, t.preload, t.cubic, t.inertia, t.weight, t.latency, t.actee_exponent);
+  std::ofstream(out / "labels" / (c.name + ".txt")) << label_of(c) << "\n" << line;
   return yaml;
 }
 

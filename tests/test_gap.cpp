@@ -206,10 +206,14 @@ TEST(Gap, TurningTheToolTellsItsWeightFromThePreload) {
 
 TEST(Gap, TheAnglesNoiseThroughAnInertiaIsPartOfTheNoiseFloor) {
   // 0.002 kg*m^2 hidden, 1e-4 rad of angle noise: the acceleration, from a
-  // degree-6 polynomial over +-25 ms at 1 kHz, carries 1.15 rad/s^2 of it
-  // (the filter's gain, worked out from its coefficients), so the inertia
-  // passes 0.002 * 1.15 / 0.16 m = 0.0144 N into the predicted effort, and
-  // the floor is hypot(0.02, 0.0144) = 0.0246 N.
+  // degree-6 polynomial over +-25 ms at 1 kHz, would carry 1.15 rad/s^2 of
+  // it (the filter's gain, worked out from its coefficients), so the
+  // inertia would pass 0.002 * 1.15 / 0.16 m = 0.0144 N into the predicted
+  // effort, a floor of hypot(0.02, 0.0144) = 0.0246 N. The slow drive lets
+  // the same polynomial over +-200 ms take the acceleration
+  // (smooth_acceleration.h), with a gain of 65.6 s^-2: 0.002 * 6.6e-3 /
+  // 0.16 = 8e-5 N, and the floor is the sensor's 0.02 N; the trace's ends,
+  // where the narrow window stays, weigh less by as much as they pass.
   Hidden h;
   h.inertia = 0.002;
   h.angle_noise = 1e-4;
@@ -219,7 +223,7 @@ TEST(Gap, TheAnglesNoiseThroughAnInertiaIsPartOfTheNoiseFloor) {
   ASSERT_NE(f, nullptr) << report_text(d);
   EXPECT_NEAR(f->value[0], 0.002, 0.0001);
   EXPECT_NEAR(d.noise, 0.02, 0.003);
-  EXPECT_NEAR(d.noise_through_model, 0.0246, 0.003);
+  EXPECT_NEAR(d.noise_through_model, 0.020, 0.001);
   EXPECT_LT(d.rmse_after, 1.3 * d.noise_through_model);
 }
 
