@@ -145,6 +145,14 @@ void print_text(const Guides& g, const std::string& guides_file, const std::stri
         std::cout << "  interaction space: from " << q(f.space.from, dim::length) << " to "
                   << q(f.space.to, dim::length) << " along the arm, jaw opening at theta_max "
                   << q(f.space.gap_from, dim::length) << " to " << q(f.space.gap_to, dim::length) << "\n";
+        if (f.space.from_shape) {
+          std::cout << "  from the tool's shape (interaction_space), the gap fully open:";
+          for (size_t k = 0; k < f.space.distances.size(); ++k) {
+            std::cout << (k > 0 ? "," : "") << " " << q(f.space.gaps[k], dim::length) << " at "
+                      << q(f.space.distances[k], dim::length);
+          }
+          std::cout << "\n";
+        }
         if (f.actees.empty()) {
           std::cout << "  no actees in " << actee_dir << "\n";
           break;

@@ -442,7 +442,8 @@ void print_model(const modelling::ToolModel& m) {
     std::cout << "\n";
   }
   std::cout << "    fully open the shape's jaws are " << q(j.gap_from(), dim::length) << " to " << q(j.gap_to(), dim::length)
-            << " apart; the object file's wedge (|r| sin theta_max, what guide and explore use) "
+            << " apart (the object file's interaction_space: what guide and explore fit actees in); the wedge of "
+               "flat jaws through the pivot (|r| sin theta_max) would be "
             << q(j.wedge_from, dim::length) << " to " << q(j.wedge_to, dim::length) << "\n";
   auto face = [](const char* what, const modelling::FacePlane& f) {
     std::cout << "    " << what << ": ";

@@ -31,6 +31,8 @@ void compile_lever(const ObjectSpec& o, Model& m) {
   m.emphasis_to = o.emphasis.to;
   m.application_from = o.application.from;
   m.application_to = o.application.to;
+  m.space_distances = o.interaction_space.distances;
+  m.space_gaps = o.interaction_space.gaps;
   m.object_mass = o.mass;
   m.object_start = to_isometry(o.functional_pose);
   m.symmetry_point = o.symmetry_plane.point;

@@ -390,6 +390,41 @@ void add_symmetry_plane(const Model& m, int index, const GuideSpec& g, Guides& o
   out.labels.push_back({index, Arm::fixed, "gravity", s.b, s.colour});
 }
 
+// The interaction space from the tool's shape (the object's table): the
+// strip over the fixed jaw's face (y = 0) as high as the gap fully open at
+// each distance, from z0 to z1, wound outward.
+GuideMesh table_mesh(const InteractionSpace& space, double z0, double z1) {
+  GuideMesh mesh;
+  for (size_t k = 0; k < space.distances.size(); ++k) {
+    for (double z : {z0, z1}) {
+      mesh.vertices.emplace_back(space.distances[k], 0, z);
+      mesh.vertices.emplace_back(space.distances[k], space.gaps[k], z);
+    }
+  }
+  auto quad = [&mesh](int a, int b, int c, int d, const Vector3d& outward) {
+    for (std::array<int, 3> t : {std::array<int, 3>{a, b, c}, std::array<int, 3>{a, c, d}}) {
+      const Vector3d& p = mesh.vertices[static_cast<size_t>(t[0])];
+      const Vector3d n = (mesh.vertices[static_cast<size_t>(t[1])] - p).cross(mesh.vertices[static_cast<size_t>(t[2])] - p);
+      if (n.dot(outward) < 0) std::swap(t[1], t[2]);
+      mesh.triangles.push_back(t);
+    }
+  };
+  // Column k's corners: 4k + 0 (face, z0), 1 (gap, z0), 2 (face, z1), 3 (gap, z1).
+  const int last = 4 * (static_cast<int>(space.distances.size()) - 1);
+  for (int i = 0; i < last; i += 4) {
+    const int j = i + 4;
+    const size_t k = static_cast<size_t>(i / 4);
+    quad(i, j, j + 1, i + 1, -Vector3d::UnitZ());
+    quad(i + 2, j + 2, j + 3, i + 3, Vector3d::UnitZ());
+    quad(i, j, j + 2, i + 2, -Vector3d::UnitY());  // on the fixed jaw's face
+    const Vector3d up(space.gaps[k] - space.gaps[k + 1], space.distances[k + 1] - space.distances[k], 0);
+    quad(i + 1, j + 1, j + 3, i + 3, up);  // under the moving jaw
+  }
+  quad(0, 1, 3, 2, -Vector3d::UnitX());
+  quad(last, last + 1, last + 3, last + 2, Vector3d::UnitX());
+  return mesh;
+}
+
 void add_interaction_space(const Model& m, int index, const GuideSpec& g, const std::vector<ActeeFit>& fits,
                            Guides& out) {
   const InteractionSpace space = interaction_space(m);
@@ -398,29 +433,34 @@ void add_interaction_space(const Model& m, int index, const GuideSpec& g, const 
   const Eigen::AlignedBox3d box = object_box(m);
   const double z0 = box.min().z(), z1 = box.max().z();
   const Eigen::Isometry3d open = moving_arm_pose(m.theta_max);
-  // The wedge between the jaws' inner faces (y = 0 in each arm's frame).
-  const Vector3d q[4] = {Vector3d(space.from, 0, 0), Vector3d(space.to, 0, 0), open * Vector3d(space.to, 0, 0),
-                         open * Vector3d(space.from, 0, 0)};
   GuideMesh mesh;
+  if (space.from_shape) {
+    mesh = table_mesh(space, z0, z1);
+  } else {
+    // The wedge between the jaws' inner faces (y = 0 in each arm's frame).
+    const Vector3d q[4] = {Vector3d(space.from, 0, 0), Vector3d(space.to, 0, 0), open * Vector3d(space.to, 0, 0),
+                           open * Vector3d(space.from, 0, 0)};
+    for (int i = 0; i < 4; ++i) mesh.vertices.push_back(q[i] + Vector3d(0, 0, z0));
+    for (int i = 0; i < 4; ++i) mesh.vertices.push_back(q[i] + Vector3d(0, 0, z1));
+    const std::array<int, 3> tris[12] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                                         {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+    Vector3d centre = Vector3d::Zero();
+    for (const Vector3d& v : mesh.vertices) centre += v / 8.0;
+    for (std::array<int, 3> t : tris) {
+      const Vector3d& a = mesh.vertices[t[0]];
+      const Vector3d n = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a);
+      if (n.dot(a - centre) < 0) std::swap(t[1], t[2]);  // wind outward whatever the arm's side
+      mesh.triangles.push_back(t);
+    }
+  }
   mesh.guide = index;
   mesh.colour = g.colour;
-  for (int i = 0; i < 4; ++i) mesh.vertices.push_back(q[i] + Vector3d(0, 0, z0));
-  for (int i = 0; i < 4; ++i) mesh.vertices.push_back(q[i] + Vector3d(0, 0, z1));
-  const std::array<int, 3> tris[12] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-                                       {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
-  Vector3d centre = Vector3d::Zero();
-  for (const Vector3d& v : mesh.vertices) centre += v / 8.0;
-  for (std::array<int, 3> t : tris) {
-    const Vector3d& a = mesh.vertices[t[0]];
-    const Vector3d n = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a);
-    if (n.dot(a - centre) < 0) std::swap(t[1], t[2]);  // wind outward whatever the arm's side
-    mesh.triangles.push_back(t);
-  }
   out.meshes.push_back(mesh);
 
   GuideColour text = g.colour;
   text.a = 1;
-  const Vector3d top = open * Vector3d(space.to, 0, 0) + Vector3d(0, 0, z1);
+  const Vector3d top = (space.from_shape ? Vector3d(space.to, space.gap_to, 0) : Vector3d(open * Vector3d(space.to, 0, 0))) +
+                       Vector3d(0, 0, z1);
   out.labels.push_back({index, Arm::fixed, "interaction space", top, text});
   // The actees: a bar on the fixed jaw over where each fitting one can sit,
   // stacked above the object, and a label each.

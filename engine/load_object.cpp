@@ -187,6 +187,66 @@ void check_pattern(const ObjectSpec& o) {
   }
 }
 
+const MapSchema& interaction_space_schema() {
+  using namespace schema;
+  static const MapSchema kSpace{
+      "the interaction space L_is from the shape: the jaws' gap fully open along the arm",
+      {required_key("distances", sequence(quantity(dim::length), 2),
+                    "signed distances along the fixed arm, increasing, within the application region"),
+       required_key("gap_at_theta_max", sequence(quantity(dim::length), 2),
+                    "the gap between the jaws at theta_max at each distance, from the fixed jaw's face")}};
+  return kSpace;
+}
+
+// At least two lengths, one per element: the distances or the gaps.
+std::vector<double> read_lengths(const Node& node, const std::string& what) {
+  if (!node.is_sequence() || node.size() < 2) node.fail("a sequence of at least 2 " + what);
+  std::vector<double> out;
+  for (size_t i = 0; i < node.size(); ++i) out.push_back(read_quantity(node[i], dim::length));
+  return out;
+}
+
+InteractionSpaceSpec read_interaction_space(const Node& node, const RangeSpec& application) {
+  MapReader m(node, "the interaction space", interaction_space_schema());
+  InteractionSpaceSpec s;
+  s.loc = node.loc();
+  const Node distances = m.required("distances");
+  s.distances = read_lengths(distances, "distances");
+  for (size_t i = 0; i < s.distances.size(); ++i) {
+    const double r = s.distances[i];
+    if (i > 0 && !(r > s.distances[i - 1])) {
+      distances[i].fail("a distance greater than the one before (" + format_quantity(s.distances[i - 1], dim::length) +
+                        ")");
+    }
+    if (r < application.from || r > application.to) {
+      distances[i].fail("a distance in the application region, between " +
+                        format_quantity(application.from, dim::length) + " and " +
+                        format_quantity(application.to, dim::length));
+    }
+  }
+  const Node gaps = m.required("gap_at_theta_max");
+  s.gaps = read_lengths(gaps, "gaps");
+  if (s.gaps.size() != s.distances.size()) {
+    gaps.fail("as many gaps as distances (" + std::to_string(s.distances.size()) + ")",
+              std::to_string(s.gaps.size()));
+  }
+  // The moving jaw's nearest point to a place on the fixed jaw is at most
+  // the distance between two places farther from the next: a gap changes
+  // no faster than the distance along the arm (1 um for the written digits).
+  constexpr double kWritten = 1e-6;  // m
+  for (size_t i = 0; i < s.gaps.size(); ++i) {
+    require_non_negative(gaps[i], s.gaps[i]);
+    if (i == 0) continue;
+    const double step = s.distances[i] - s.distances[i - 1];
+    if (std::abs(s.gaps[i] - s.gaps[i - 1]) > step + kWritten) {
+      gaps[i].fail("a gap within " + format_quantity(step, dim::length) + " of the one before (" +
+                   format_quantity(s.gaps[i - 1], dim::length) +
+                   "): a gap changes no faster than the distance along the arm");
+    }
+  }
+  return s;
+}
+
 // A part sits on its arm: its position along the arm (x) within the arm's
 // extent, else it would hang in the air beyond the tool.
 PartSpec read_part(const Node& node, const RangeSpec& arm) {
@@ -224,6 +284,9 @@ const MapSchema& object_schema() {
        required_key("spring", mapping(spring_schema()), "the spring between the arms"),
        required_key("emphasis", mapping(range_schema()), "where the hand pushes, on the arm"),
        required_key("application", mapping(range_schema()), "where the tool acts on the actee, on the arm"),
+       optional_key("interaction_space", mapping(interaction_space_schema()),
+                    "the jaws' gap fully open along the arm, from the shape (afford model); without it the wedge "
+                    "of flat jaw faces through the pivot"),
        required_key("parts", sequence(mapping(part_schema()), 1), "the rigid parts, on both arms"),
        optional_key("effects", mapping(effects_schema(EffectHome::object)), "optional effects of the lever")}};
   return kObject;
@@ -263,6 +326,9 @@ ObjectSpec read_object(const Node& root) {
   o.application = read_range(application, "the application region");
   require_region_on_arm(application, o.application, o.lever.arm);
   check_pattern(o);
+  if (std::optional<Node> space = m.optional("interaction_space")) {
+    o.interaction_space = read_interaction_space(*space, o.application);
+  }
   const Node parts = m.required("parts");
   if (!parts.is_sequence() || parts.size() == 0) parts.fail("a sequence of parts");
   bool has_arm[2] = {false, false};

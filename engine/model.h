@@ -70,6 +70,8 @@ struct Model {
   double spring_position = 0;                  // m, signed S_p
   double emphasis_from = 0, emphasis_to = 0;   // m, signed
   double application_from = 0, application_to = 0;  // m, signed
+  // L_is from the object's interaction_space table (derive.h); empty: the wedge
+  std::vector<double> space_distances, space_gaps;  // m, signed distances; m, gaps at theta_max
   double object_mass = 0;                      // kg
   Eigen::Isometry3d object_start = Eigen::Isometry3d::Identity();  // functional pose in the world
   Eigen::Vector3d symmetry_point = Eigen::Vector3d::Zero();    // m, O_sp in the object frame

@@ -104,6 +104,17 @@ struct PlaneSpec {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit
 };
 
+// The interaction space L_is as the real shape gives it (the optional key
+// `interaction_space`, written by afford model): how far apart the jaws are
+// fully open (theta_max) at distances along the fixed arm, measured from the
+// fixed jaw's face (y = 0). Without it L_is is the wedge of flat jaw faces
+// through the pivot (engine/derive.h).
+struct InteractionSpaceSpec {
+  std::vector<double> distances;  // m, signed, increasing, within the application region; empty: the wedge
+  std::vector<double> gaps;       // m, >= 0, the gap at theta_max at each distance
+  SourceLoc loc;
+};
+
 struct ObjectSpec {
   std::string file;
   std::string name;
@@ -116,6 +127,7 @@ struct ObjectSpec {
   SpringSpec spring;
   RangeSpec emphasis;         // where the agent pushes (P_emphasis, L_cp)
   RangeSpec application;      // where an actee can sit: the interaction space
+  InteractionSpaceSpec interaction_space;  // optional: L_is from the shape
   std::vector<PartSpec> parts;
   std::vector<EffectSpec> effects;
   SourceLoc loc;

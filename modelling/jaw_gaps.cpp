@@ -12,19 +12,20 @@ namespace afford::modelling {
 using Eigen::Vector2d;
 
 
-JawGaps jaw_gaps(const TriangleMesh& fixed, const TriangleMesh& moving, const LeverGeometry& lever) {
+JawGaps jaw_gaps(const TriangleMesh& moving, const LeverGeometry& lever) {
   JawGaps out;
-  const Outline fixed_outline = outline_of(fixed);
   const Outline moving_outline = outline_of(moving);
   for (int i = 0; i < kJawGapAngles; ++i) {
     out.angles.push_back(lever.theta_min + (lever.theta_max - lever.theta_min) * i / (kJawGapAngles - 1));
   }
-  std::vector<Vector2d> face;  // the fixed jaw's face, object frame
+  // Where an actee rests on the fixed jaw's face (y = 0, object frame): a
+  // gap from there changes no faster than the distance along the arm, as
+  // the object file's loader checks.
+  std::vector<Vector2d> face;
   for (int k = 0; k < kJawGapDistances; ++k) {
     const double r = lever.application.from + (lever.application.to - lever.application.from) * k / (kJawGapDistances - 1);
     out.distances.push_back(r);
-    const double top = edge_at(fixed_outline, r, +1);
-    face.emplace_back(r, std::isnan(top) ? 0.0 : top);  // no fixed part there: the face's plane, y = 0
+    face.emplace_back(r, 0.0);
   }
   for (const double theta : out.angles) {
     // The moving part turned by theta is the point turned back by theta.

@@ -3,15 +3,15 @@
 // application region, at openings from theta_min to theta_max; an actee
 // fits at a distance and opening where it is no larger than the gap there.
 // The gap is measured in the plane the tool turns in (x-y of the object
-// frame), as the actee between the jaws sees it: each part is taken as its
-// outline seen along the pivot axis (scissors' blades pass each other in
-// z, yet close the gap between them). At distance r it runs from the top of
-// the fixed part's outline at x = r (its jaw face, y = 0 for a flat face
-// through the pivot) to the nearest point of the moving part's outline,
+// frame), as the actee between the jaws sees it: the moving part is taken
+// as its outline seen along the pivot axis (scissors' blades pass each
+// other in z, yet close the gap between them). At distance r it runs from
+// the fixed jaw's face where an actee rests, (r, 0) (the object frame puts
+// that face in y = 0), to the nearest point of the moving part's outline,
 // turned by the opening.
 //
-// The object format holds L_is as the application region and theta_max:
-// the engine (engine/derive.h) takes it as the wedge of flat jaw faces
+// The object file holds the row at theta_max (`interaction_space`), which
+// the engine (engine/derive.h) uses instead of the wedge of flat jaw faces
 // through the pivot, |r| sin(theta_max) wide. `wedge_*` is that figure, so
 // the report says how far the real shape departs from the wedge.
 #pragma once
@@ -35,8 +35,8 @@ struct JawGaps {
 inline constexpr int kJawGapAngles = 5;      // theta_min, three between, theta_max
 inline constexpr int kJawGapDistances = 9;   // across the application region
 
-// `fixed` in the object frame; `moving` in the moving arm's frame (where it
-// lies closed, so that opening theta turns it by theta about +z).
-JawGaps jaw_gaps(const TriangleMesh& fixed, const TriangleMesh& moving, const LeverGeometry& lever);
+// `moving` in the moving arm's frame (where it lies closed, so that opening
+// theta turns it by theta about +z).
+JawGaps jaw_gaps(const TriangleMesh& moving, const LeverGeometry& lever);
 
 }  // namespace afford::modelling

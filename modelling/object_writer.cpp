@@ -21,6 +21,11 @@ std::string num(double x, int digits = 6) {
 std::string mm(double m) { return num(m * 1e3) + " mm"; }
 std::string deg(double rad) { return num(rad * 180 / std::numbers::pi) + " deg"; }
 std::string mm3(const Eigen::Vector3d& v) { return "[" + mm(v.x()) + ", " + mm(v.y()) + ", " + mm(v.z()) + "]"; }
+std::string mm_list(const std::vector<double>& m) {
+  std::string out = "[";
+  for (size_t i = 0; i < m.size(); ++i) out += (i > 0 ? ", " : "") + mm(m[i]);
+  return out + "]";
+}
 std::string range(const RangeSpec& r) { return "{from: " + mm(r.from) + ", to: " + mm(r.to) + "}"; }
 
 std::string found(bool from_shape) { return from_shape ? "from the gap between the parts" : "as given"; }
@@ -38,10 +43,10 @@ std::string object_yaml(const ToolModel& m) {
       << "# Jaws (application) " << found(l.application_found) << "; handle (emphasis) " << found(l.emphasis_found)
       << ".\n"
       << "# Parts: convex hulls of the collision elements (long concave ones cut in slabs).\n"
-      << "# Interaction space (L_is): application and theta_max, the wedge |r| sin theta_max, " << mm(m.jaws.wedge_from)
-      << " to " << mm(m.jaws.wedge_to) << " wide;\n"
-      << "# the shape's jaws fully open are " << mm(m.jaws.gap_from()) << " to " << mm(m.jaws.gap_to())
-      << " apart (afford model reports the gap at each opening).\n";
+      << "# Interaction space (L_is): the shape's jaws fully open are " << mm(m.jaws.gap_from()) << " to "
+      << mm(m.jaws.gap_to()) << " apart (interaction_space, below;\n"
+      << "# afford model reports the gap at each opening); the wedge |r| sin theta_max would be "
+      << mm(m.jaws.wedge_from) << " to " << mm(m.jaws.wedge_to) << ".\n";
   if (!m.spring) {
     out << "# No spring: a URDF or a mesh has none. Add it with afford model ... --spring K_N_M_PER_RAD,REST_DEG,\n"
         << "# or write a guess and fit it to a probing trace with afford gap --probe (gap/README.md).\n";
@@ -82,6 +87,9 @@ std::string object_yaml(const ToolModel& m) {
   }
   out << "emphasis: " << range(l.emphasis) << "\n"
       << "application: " << range(l.application) << "\n"
+      << "interaction_space:   # the gap between the jaws fully open, from the fixed jaw's face\n"
+      << "  distances: " << mm_list(m.jaws.distances) << "\n"
+      << "  gap_at_theta_max: " << mm_list(m.jaws.gap.back()) << "\n"
       << "parts:\n";
   for (const ConvexPart& p : m.parts) {
     out << "  - name: " << p.name << "\n"

@@ -138,7 +138,7 @@ ToolModel model_tool(const UrdfTool& tool, const ToolModelOptions& o) {
   TriangleMesh fixed_part, moving_part;
   append(fixed_part, tool.fixed, lever.fixed_to_object);
   append(moving_part, tool.moving, lever.moving_to_arm);
-  m.jaws = jaw_gaps(fixed_part, moving_part, lever);
+  m.jaws = jaw_gaps(moving_part, lever);
   m.faces = contact_planes(fixed_part, moving_part, lever);
 
   std::vector<std::string> taken;

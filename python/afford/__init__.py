@@ -194,7 +194,7 @@ def explore(object: PathLike, actees: Optional[Sequence[PathLike]] = None, *,
             grasps: Sequence[str] = (), tolerance: float = 0.5,
             threads: int = 0) -> Dict[str, Any]:
     """One tool on every actee, placement, thumb, grasp type and effort, as
-    `afford explore` (README "Exploring what a tool can do").
+    `afford explore` (explore/README.md).
 
     actees: actee files or folders of them (default: the shipped actees).
     placements, thumbs, efforts: points per axis; max_effort: N, the common
