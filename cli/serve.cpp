@@ -49,12 +49,17 @@ int serve_session(ServeCliOptions o) {
   const OutputScope scope({.writer = "serve", .force = false, .inputs = {s.session_file}});
   serve::Server server(s);  // DataError: file:line:col
   server.start();
-  std::printf("serving %s at %s (participant %s, trials in %s); Ctrl-C ends\n", s.session_file.c_str(),
-              server.url().c_str(), s.participant.c_str(), server.out_dir().string().c_str());
-  std::fflush(stdout);
+  // Caught before the address is printed: a Ctrl-C as soon as it shows ends the session cleanly.
   auto previous = std::signal(SIGINT, on_serve_interrupt);
   auto previous_term = std::signal(SIGTERM, on_serve_interrupt);
-  while (!server.wait(0.2)) {
+  std::printf("serving %s at %s (participant %s, trials in %s); Ctrl-C ends\n", s.session_file.c_str(),
+              server.url().c_str(), s.participant.c_str(), server.out_dir().string().c_str());
+  if (!server.real_time_priority()) {
+    std::printf("the frame loop runs at ordinary priority (this system allows no real-time scheduling): a busy "
+                "machine makes more frames late\n");
+  }
+  std::fflush(stdout);
+  while (!server.wait(0.02)) {  // Ctrl-C is seen within 20 ms
     if (g_stop.load()) break;
   }
   server.stop();

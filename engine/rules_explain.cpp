@@ -1,5 +1,8 @@
 // Explanations: each node of an inference written out with the values that
 // made it true, e.g. "force(object, actee) = 312 N > limit(actee) = 300 N".
+#include "rules_explain.h"
+
+#include <algorithm>
 #include <cstdio>
 
 #include "rules_impl.h"
@@ -116,30 +119,56 @@ std::string explain_details(const RuleNode& node, const double* detail_values) {
   return text;
 }
 
+size_t inference_count(const RuleState& rs) { return rs.log.size(); }
+
+InferenceValues inference_values(const RuleState& rs, size_t index) {
+  const RuleState::Record& r = rs.log[index];
+  const size_t times_end = index + 1 < rs.log.size() ? rs.log[index + 1].times_at : rs.log_times.size();
+  const size_t values_end = index + 1 < rs.log.size() ? rs.log[index + 1].values_at : rs.log_values.size();
+  return {r.function, r.t, std::span<const double>(rs.log_times.data() + r.times_at, times_end - r.times_at),
+          std::span<const double>(rs.log_values.data() + r.values_at, values_end - r.values_at)};
+}
+
+size_t max_inference_nodes(const RuleSet& rules) {
+  size_t n = 0;
+  for (const RuleFunction& fn : rules.functions) n = std::max(n, fn.nodes.size());
+  return n;
+}
+
+size_t max_inference_values(const RuleSet& rules) {
+  size_t n = 0;
+  for (const RuleFunction& fn : rules.functions) n = std::max(n, static_cast<size_t>(fn.value_count));
+  return n;
+}
+
+Inference explain_inference(const RuleSet& rules, int function, double t, std::span<const double> node_times,
+                            std::span<const double> values) {
+  const RuleFunction& fn = rules.functions[static_cast<size_t>(function)];
+  Inference inf;
+  inf.function = fn.name;
+  inf.t = t;
+  for (size_t i = 0; i < fn.nodes.size(); ++i) {
+    const RuleNode& node = fn.nodes[i];
+    std::string text;
+    if (node.required >= 0) {
+      text = node.text;
+    } else {
+      text = explain_node(node, values.data() + node.value_offset);
+    }
+    if (node.min_duration > 0) text += " (held for " + format_quantity(node.min_duration, dim::time) + ")";
+    inf.nodes.push_back({text, node_times[i]});
+    inf.node_details.push_back(
+        node.details.empty() ? std::string()
+                             : explain_details(node, values.data() + node.value_offset + node.tree.nodes.size()));
+  }
+  return inf;
+}
+
 std::vector<Inference> inferences(const RuleSet& rules, const RuleState& rs) {
   std::vector<Inference> out;
-  for (const RuleState::Record& r : rs.log) {
-    const RuleFunction& fn = rules.functions[static_cast<size_t>(r.function)];
-    Inference inf;
-    inf.function = fn.name;
-    inf.t = r.t;
-    for (size_t i = 0; i < fn.nodes.size(); ++i) {
-      const RuleNode& node = fn.nodes[i];
-      const double t = rs.log_times[r.times_at + i];
-      std::string text;
-      if (node.required >= 0) {
-        text = node.text;
-      } else {
-        text = explain_node(node, rs.log_values.data() + r.values_at + node.value_offset);
-      }
-      if (node.min_duration > 0) text += " (held for " + format_quantity(node.min_duration, dim::time) + ")";
-      inf.nodes.push_back({text, t});
-      inf.node_details.push_back(
-          node.details.empty()
-              ? std::string()
-              : explain_details(node, rs.log_values.data() + r.values_at + node.value_offset + node.tree.nodes.size()));
-    }
-    out.push_back(std::move(inf));
+  for (size_t i = 0; i < inference_count(rs); ++i) {
+    const InferenceValues v = inference_values(rs, i);
+    out.push_back(explain_inference(rules, v.function, v.t, v.node_times, v.values));
   }
   return out;
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "recording.h"
+#include "rules_explain.h"
 
 namespace afford::serve {
 
@@ -336,12 +337,13 @@ std::string event_message(const RuleSet& rules, const Event& e, const Inference*
 
 std::string frame_event_message(const RuleSet& rules, const RuleState& rs, const Event& e) {
   if (e.kind != EventKind::inferred) return event_message(rules, e, nullptr);
-  const std::vector<Inference> all = inferences(rules, rs);
-  const Inference* found = nullptr;
-  for (const Inference& inf : all) {
-    if (inf.function == function_name(rules, e.function) && inf.t == e.t) found = &inf;
+  for (size_t i = inference_count(rs); i-- > 0;) {  // this frame's is the newest of its function and time
+    const InferenceValues v = inference_values(rs, i);
+    if (v.function != e.function || v.t != e.t) continue;
+    const Inference inf = explain_inference(rules, v.function, v.t, v.node_times, v.values);
+    return event_message(rules, e, &inf);
   }
-  return event_message(rules, e, found);
+  return event_message(rules, e, nullptr);  // not recorded (the rule state's log was full)
 }
 
 }  // namespace afford::serve

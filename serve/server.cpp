@@ -2,13 +2,17 @@
 #include "server.h"
 
 #include <civetweb.h>
+#include <pthread.h>
+#include <sched.h>
 
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <future>
 #include <stdexcept>
 
 #include "data_dir.h"
+#include "event_ring.h"
 #include "files.h"
 #include "recording.h"
 #include "scene_message.h"
@@ -54,6 +58,7 @@ struct Server::Trial {
   int actee = -1;  // on the shelf; -1 the session's own
   std::string stem, actee_name, session_file, recording, outputs, scene;
   CompiledSession session;
+  std::shared_ptr<EventRing> events;  // the rules' events, to the sender
   std::unique_ptr<Recorder> recorder;
   std::unique_ptr<CheckedFile> timeline_file, trace_file;
   std::unique_ptr<TimelineWriter> timeline;
@@ -146,23 +151,28 @@ class Server::Source : public SampleSource {
 };
 
 // After each frame: the state for the pages every 1/60 s of session time,
-// and the frame's events.
+// and the frame's events, into fixed buffers (nothing is allocated: the
+// sender thread writes the events' text).
 class Poster : public Observer {
  public:
   using PostState = void (*)(void*, const char*, size_t);
-  using PostEvent = void (*)(void*, std::string);
-  Poster(void* server, PostState post_state, PostEvent post_event, const PageAgent& agent, int trial,
+  using Wake = void (*)(void*);
+  Poster(void* server, PostState post_state, Wake wake, EventRing& events, const PageAgent& agent, int trial,
          const std::atomic<std::int64_t>& misses)
-      : server_(server), post_state_(post_state), post_event_(post_event), agent_(agent), misses_(misses) {
+      : server_(server), post_state_(post_state), wake_(wake), events_(events), agent_(agent), misses_(misses) {
     message_.trial = trial;
   }
   void on_start(const Model& model, const State&, const RuleSet&) override {
     every_ = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::lround(1.0 / 60.0 / model.timestep)));
   }
-  void on_frame(const Model& model, const State& state, const RuleSet& rules, const RuleState& rs) override {
-    // An inference's explanation is text (allocated; a few frames a trial).
-    for (const Event* e = events_begin(rs); e != events_end(rs); ++e) post_event_(server_, frame_event_message(rules, rs, *e));
-    if (state.frame % every_ != 0 && events_begin(rs) == events_end(rs)) return;
+  void on_frame(const Model& model, const State& state, const RuleSet&, const RuleState& rs) override {
+    const bool events = events_begin(rs) != events_end(rs);
+    for (const Event* e = events_begin(rs); e != events_end(rs); ++e) events_.push(rs, *e);
+    // A frame that applied a page's command posts at once: the page's
+    // drag shows on its bars without waiting for the next 1/60 s.
+    const bool applied = agent_.applied_seq() != posted_seq_;
+    if (state.frame % every_ != 0 && !events && !applied) return;
+    posted_seq_ = agent_.applied_seq();
     fill_state_message(state, model, &message_);
     message_.squeeze = agent_.squeeze();
     message_.squeeze_target = agent_.squeeze_target();
@@ -170,21 +180,43 @@ class Poster : public Observer {
     message_.deadline_misses = misses_.load();
     message_.applied_seq = agent_.applied_seq();
     const size_t n = format_state(message_, buffer_.data(), buffer_.size());
-    if (n > 0) post_state_(server_, buffer_.data(), n);
+    if (n > 0) {
+      post_state_(server_, buffer_.data(), n);  // wakes the sender
+    } else if (events) {
+      wake_(server_);
+    }
   }
 
  private:
   void* server_;
   PostState post_state_;
-  PostEvent post_event_;
+  Wake wake_;
+  EventRing& events_;
   const PageAgent& agent_;
   const std::atomic<std::int64_t>& misses_;
   std::int64_t every_ = 17;
+  std::int64_t posted_seq_ = -1;  // the applied_seq of the last state posted
   StateMessage message_;
   std::array<char, kStateMessageBytes> buffer_{};
 };
 
 // ------------------------------------------------------------ the server
+
+namespace {
+
+// The frame thread as a real-time thread (SCHED_FIFO, low among real-time
+// priorities, above every ordinary thread): a busy machine then delays
+// its wake-ups less. It sleeps most of each 1 ms frame, so it takes little
+// from the rest. False where the system does not allow it (no
+// CAP_SYS_NICE, no rtprio limit).
+bool raise_to_real_time() {
+  sched_param p{};
+  p.sched_priority = 10;
+  return pthread_setschedparam(pthread_self(), SCHED_FIFO, &p) == 0;
+}
+
+}  // namespace
+
 
 Server::Server(ServeOptions options) : options_(std::move(options)) {
   if (!valid_participant(options_.participant)) {
@@ -219,12 +251,18 @@ void Server::start() {
     next_trial_ = next_trial(out_dir_, options_.participant);
     first_trial_ = begin_trial(-1);
   } catch (...) {
-    stop_web_server(ctx_);
+    stop_web_server(ctx_, options_.bind, port_);
     ctx_ = nullptr;
     throw;
   }
   sender_thread_ = std::thread([this] { sender_loop(); });
-  frame_thread_ = std::thread([this] { frame_loop(); });
+  std::promise<bool> raised;
+  std::future<bool> priority = raised.get_future();
+  frame_thread_ = std::thread([this, raised = std::move(raised)]() mutable {
+    raised.set_value(options_.realtime && raise_to_real_time());
+    frame_loop();
+  });
+  real_time_priority_ = priority.get();
 }
 
 void Server::stop() {
@@ -240,11 +278,25 @@ void Server::stop() {
     post_cv_.notify_all();
   }
   if (sender_thread_.joinable()) sender_thread_.join();
-  stop_web_server(ctx_);
+  close_pages();
+  stop_web_server(ctx_, options_.bind, port_);
   ctx_ = nullptr;
   finished_.store(true);
   std::lock_guard lock(finish_mutex_);
   finish_cv_.notify_all();
+}
+
+void Server::close_pages() {
+  // A close frame (1001, going away) tells each page the session ended;
+  // stop_web_server then ends the connections themselves.
+  static constexpr char kGoingAway[] = "\x03\xe9" "afford serve stopped";
+  std::lock_guard lock(pages_mutex_);
+  for (const std::unique_ptr<Page>& p : pages_) {
+    if (p->ready && !p->broken) {
+      mg_websocket_write(p->conn, MG_WEBSOCKET_OPCODE_CONNECTION_CLOSE, kGoingAway, sizeof kGoingAway - 1);
+      p->broken = true;
+    }
+  }
 }
 
 bool Server::wait(double timeout_s) {
@@ -331,6 +383,7 @@ std::unique_ptr<Server::Trial> Server::begin_trial(int actee) {
   t->trace = std::make_unique<TraceWriter>(t->trace_file->file);
   SceneInfo info{t->number, options_.participant, t->recording, t->actee_name, shelf_names_, &guides_};
   t->scene = scene_message(t->session, grip_, start_, limits_, info);
+  t->events = std::make_shared<EventRing>(t->session.rules);
   ++next_trial_;
   return t;
 }
@@ -341,7 +394,7 @@ void Server::frame_loop() {
   while (trial) {
     current_trial_.store(trial->number);
     trials_started_.fetch_add(1);
-    post_scene(trial->scene);
+    post_scene(trial->scene, trial->events);
     Source source(*this, trial->session.model, offset, trial->recorder.get());
     Poster poster(
         this, [](void* s, const char* text, size_t n) {
@@ -352,9 +405,15 @@ void Server::frame_loop() {
           ++server.state_seq_;
           server.post_cv_.notify_one();
         },
-        [](void* s, std::string message) { static_cast<Server*>(s)->post_event(std::move(message)); },
-        source.agent(), trial->number, total_misses_);
+        [](void* s) {
+          Server& server = *static_cast<Server*>(s);
+          std::lock_guard lock(server.post_mutex_);
+          server.wake_ = true;
+          server.post_cv_.notify_one();
+        },
+        *trial->events, source.agent(), trial->number, total_misses_);
     std::vector<Observer*> observers = {trial->timeline.get(), trial->trace.get(), trial->recorder.get(), &poster};
+    observers.insert(observers.end(), options_.observers.begin(), options_.observers.end());
     const RunResult result = run_session(trial->session, *trial->session.rules, source, observers);
 
     TrialSummary summary;
@@ -412,9 +471,11 @@ void Server::frame_loop() {
   finish_cv_.notify_all();
 }
 
-void Server::post_scene(const std::string& scene) {
+void Server::post_scene(const std::string& scene, std::shared_ptr<EventRing> events) {
+  auto message = std::make_shared<const std::string>(scene);
   std::lock_guard lock(post_mutex_);
-  scene_ = std::make_shared<const std::string>(scene);
+  scene_ = std::move(message);
+  ring_ = std::move(events);
   ++scene_seq_;
   post_cv_.notify_one();
 }
@@ -431,7 +492,12 @@ void Server::sender_loop() {
   std::uint64_t sent_state = 0;
   std::deque<std::string> events;
   std::shared_ptr<const std::string> scene;
+  std::shared_ptr<EventRing> ring;  // the trial's events
   std::uint64_t scene_seq = 0;
+  const auto drain = [&](EventRing* r) {
+    std::string message;
+    while (r != nullptr && r->pop(&message)) events.push_back(std::move(message));
+  };
   for (;;) {
     bool new_state = false;
     {
@@ -447,10 +513,16 @@ void Server::sender_loop() {
         sent_state = state_seq_;
         new_state = true;
       }
-      events.swap(events_);
+      for (std::string& m : events_) events.push_back(std::move(m));
+      events_.clear();
       scene = scene_;
       scene_seq = scene_seq_;
+      if (ring_ != ring) {
+        drain(ring.get());  // the last of the trial that ended, before the next one's scene
+        ring = ring_;
+      }
     }
+    drain(ring.get());
     std::lock_guard lock(pages_mutex_);
     for (const std::unique_ptr<Page>& p : pages_) {
       Page& page = *p;

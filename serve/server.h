@@ -4,18 +4,19 @@
 // Threads:
 //   - the frame thread runs the trials one after another (run_session at
 //     the session's timestep, paced to the wall clock): each frame takes
-//     the driver's queued commands (a fixed ring under a mutex: nothing is
-//     allocated), steps, records, and every 1/60 s of session time posts
-//     the state (formatted into a fixed buffer) for the pages; a frame
-//     with events of the rules also posts them (allocating, in those rare
-//     frames only: an inference's explanation is text);
+//     the driver's queued commands (a fixed ring under a mutex), steps,
+//     records, and every 1/60 s of session time posts the state (formatted
+//     into a fixed buffer) for the pages; a frame with events of the rules
+//     copies them, with what an inference's explanation needs, into the
+//     trial's EventRing (event_ring.h). A frame allocates nothing
+//     (tests/alloc/test_serve_frame.cpp);
 //   - civetweb's threads accept pages (HTTP for web/ and three.js, one
 //     WebSocket per page), check every message (protocol.h) and queue the
 //     driver's; a bad message is logged and answered with an error, never
 //     applied;
 //   - the sender thread writes to the pages: hello and the scene to a new
-//     page, then the states and events; it alone writes to sockets, so the
-//     frame thread never waits for a page.
+//     page, then the states and events (writing the events' text); it
+//     alone writes to sockets, so the frame thread never waits for a page.
 // The first page drives; the others watch until the driver leaves, when
 // the longest-connected watcher takes over. A page's "actee" or "reset"
 // ends the trial; the next starts with a new recording.
@@ -32,7 +33,9 @@
 #include <thread>
 #include <vector>
 
+#include "event_ring.h"
 #include "guides.h"
+#include "observer.h"
 #include "page_agent.h"
 #include "protocol.h"
 #include "session.h"
@@ -59,6 +62,9 @@ struct ServeOptions {
   // runs only when advance() allows it (tests drive by session time).
   bool realtime = true;
   int max_pages = 8;                    // pages connected at once; more are refused
+  // More observers of every frame of every trial, after the server's own,
+  // on the frame thread (tests: allocations per frame).
+  std::vector<Observer*> observers;
 };
 
 // One trial, when it has ended.
@@ -100,6 +106,10 @@ class Server {
   void start();
   int port() const { return port_; }
   std::string url() const;
+  // Whether the frame thread runs at real-time priority (SCHED_FIFO; in
+  // real time only, where the system allows it): fewer late frames on a
+  // busy machine. Known once start() returns.
+  bool real_time_priority() const { return real_time_priority_; }
   // Ends the session: the trial in progress ends cleanly (its recording
   // closed with its end record), the pages are closed.
   void stop();
@@ -138,9 +148,10 @@ class Server {
   void frame_loop();
   void sender_loop();
   std::unique_ptr<Trial> begin_trial(int actee);  // -1: the session's own
-  void post_scene(const std::string& scene);
+  void post_scene(const std::string& scene, std::shared_ptr<EventRing> events);
   void post_event(std::string message);
   void reject(Page& page, const std::string& why);
+  void close_pages();  // a close frame to each page: the session ended
 
   ServeOptions options_;
   CompiledSession session_;     // as served (its script gives the start and the grip)
@@ -171,6 +182,7 @@ class Server {
   std::uint64_t state_seq_ = 0;
   std::deque<std::string> events_;
   std::shared_ptr<const std::string> scene_;
+  std::shared_ptr<EventRing> ring_;  // the trial's events (event_ring.h)
   std::uint64_t scene_seq_ = 0;
   bool sender_stop_ = false;
   bool wake_ = false;  // a page connected or has something in its outbox
@@ -191,6 +203,7 @@ class Server {
   double waiting_for_ = 0;     // s, the frame it waits to run
 
   std::atomic<bool> stop_{false}, finished_{false};
+  bool real_time_priority_ = false;
   std::atomic<int> current_trial_{0}, trials_started_{0};
   std::atomic<std::int64_t> states_sent_{0};
   std::atomic<std::int64_t> total_misses_{0};

@@ -44,7 +44,7 @@ void Viewer::start() {
 }
 
 void Viewer::stop() {
-  stop_web_server(ctx_);
+  stop_web_server(ctx_, options_.bind, port_);
   ctx_ = nullptr;
 }
 

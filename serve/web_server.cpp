@@ -1,10 +1,19 @@
 #include "web_server.h"
 
+#include <arpa/inet.h>
 #include <civetweb.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
+#include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace afford::serve {
@@ -38,6 +47,10 @@ StartedWebServer start_web_server(const WebServerOptions& o) {
                                      "num_threads", threads.c_str(), "enable_directory_listing", "no",
                                      "url_rewrite_patterns", three.c_str(), "request_timeout_ms", "10000"};
   if (o.websocket) config.insert(config.end(), {"websocket_timeout_ms", "86400000"});  // a page stays a day
+  // Small messages go out at once: without it a state written while the
+  // page has not yet acknowledged the last one waits for its delayed ACK
+  // (Nagle's algorithm; up to 40 ms on Linux).
+  config.insert(config.end(), {"tcp_nodelay", "1"});
   config.push_back(nullptr);
   mg_callbacks callbacks{};
   callbacks.log_message = log_message;
@@ -57,9 +70,62 @@ StartedWebServer start_web_server(const WebServerOptions& o) {
   return started;
 }
 
-void stop_web_server(mg_context* ctx) {
+namespace {
+
+// Opens and closes a TCP connection to address:port (errors ignored: the
+// knock only wakes a poll()).
+void knock(const std::string& address, int port) {
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(static_cast<std::uint16_t>(port));
+  if (inet_pton(AF_INET, address.c_str(), &a.sin_addr) != 1) return;
+  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) return;
+  (void)::connect(fd, reinterpret_cast<const sockaddr*>(&a), sizeof a);
+  ::close(fd);
+}
+
+// Shuts down this process's connections accepted on `port` (the sockets
+// whose own port is `port` and that have a peer: not the listening one,
+// not a client's), so that the civetweb threads polling them (a page's
+// WebSocket, in 2 s slices) see the end at once. Stopping only.
+void end_connections(int port) {
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator("/proc/self/fd", ec)) {
+    const std::string name = entry.path().filename().string();
+    char* end = nullptr;
+    const long fd = std::strtol(name.c_str(), &end, 10);
+    if (*end != '\0' || fd < 0) continue;
+    sockaddr_in self{}, peer{};
+    socklen_t n = sizeof self, m = sizeof peer;
+    if (::getsockname(static_cast<int>(fd), reinterpret_cast<sockaddr*>(&self), &n) != 0 || self.sin_family != AF_INET ||
+        ntohs(self.sin_port) != port) {
+      continue;
+    }
+    if (::getpeername(static_cast<int>(fd), reinterpret_cast<sockaddr*>(&peer), &m) != 0) continue;
+    ::shutdown(static_cast<int>(fd), SHUT_RDWR);
+  }
+}
+
+}  // namespace
+
+void stop_web_server(mg_context* ctx, const std::string& bind, int port) {
   if (ctx == nullptr) return;
+  // Listening on every address: knock on this machine's.
+  const std::string address = bind == "0.0.0.0" || bind == "localhost" ? "127.0.0.1" : bind;
+  std::atomic<bool> stopped{false};
+  std::thread knocker([&] {
+    // mg_stop() raises its stop flag first, then waits: the first knock
+    // after that ends the listening thread's poll().
+    while (!stopped.load()) {
+      end_connections(port);
+      knock(address, port);
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  });
   mg_stop(ctx);
+  stopped.store(true);
+  knocker.join();
   mg_exit_library();
 }
 

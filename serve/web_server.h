@@ -29,7 +29,13 @@ struct StartedWebServer {
 // with stop_web_server.
 StartedWebServer start_web_server(const WebServerOptions& o);
 
-// Stops a started server (ctx may be null) and releases civetweb.
-void stop_web_server(mg_context* ctx);
+// Stops a started server (ctx may be null) and releases civetweb, within
+// a few milliseconds: civetweb's listening thread sleeps in poll() for up
+// to 2 s (its SOCKET_TIMEOUT_QUANTUM) before it sees the stop, so while
+// mg_stop() waits for it, this connects to the server's own address every
+// 5 ms to wake it, and shuts down the connections it accepted (a page's
+// WebSocket thread polls in the same 2 s slices). `bind` and `port` are
+// where it listens.
+void stop_web_server(mg_context* ctx, const std::string& bind, int port);
 
 }  // namespace afford::serve

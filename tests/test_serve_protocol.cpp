@@ -13,6 +13,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "event_ring.h"
 #include "page_agent.h"
 #include "protocol.h"
 #include "run.h"
@@ -427,6 +428,76 @@ TEST(ServeProtocol, EventsCarryTheExplanation) {
     }
   }
   fs::remove_all(dir);
+}
+
+// The frame thread's ring (event_ring.h): every event of a run, pushed as
+// it happens and written out later, reads as frame_event_message writes it
+// in the frame; the inferences' explanations are `afford run`'s.
+class RingFeeder : public Observer {
+ public:
+  explicit RingFeeder(EventRing& ring) : ring_(ring) {}
+  void on_frame(const Model&, const State&, const RuleSet& rules, const RuleState& rs) override {
+    for (const Event* e = events_begin(rs); e != events_end(rs); ++e) {
+      EXPECT_TRUE(ring_.push(rs, *e));
+      in_frame.push_back(frame_event_message(rules, rs, *e));
+    }
+  }
+  std::vector<std::string> in_frame;
+
+ private:
+  EventRing& ring_;
+};
+
+TEST(ServeEventRing, WritesOutWhatTheFrameSaw) {
+  const CompiledSession session = load_session(kSource + "/sessions/paper-tongs.yaml");
+  const PageGrip grip = page_grip(session);
+  const PageStart start = page_start(session);
+  const fs::path dir = scratch("ring");
+  const CompiledSession trial = write_trial_session(session, "", dir, "p-trial-001");
+  Plan plan(trial.model, grip, start, 7.0);
+  plan_tongs(plan, start);
+  EventRing ring(trial.rules);
+  RingFeeder feeder(ring);
+  Observer* const observers[] = {&feeder};
+  const RunResult r = run_session(trial, *trial.rules, plan, observers);
+  std::vector<std::string> out;
+  std::string message;
+  while (ring.pop(&message)) out.push_back(message);
+  EXPECT_EQ(out, feeder.in_frame);
+  EXPECT_EQ(ring.dropped(), 0);
+  std::vector<Json> inferred;
+  for (const std::string& m : out) {
+    const Json j = Json::parse(m);
+    if (j["kind"] == "inferred") inferred.push_back(j);
+  }
+  ASSERT_EQ(inferred.size(), r.inferences.size());
+  ASSERT_GE(inferred.size(), 4u);  // pinch, hold, carry, crash
+  for (size_t i = 0; i < inferred.size(); ++i) {
+    ASSERT_EQ(inferred[i]["explanation"].size(), r.inferences[i].nodes.size());
+    for (size_t n = 0; n < r.inferences[i].nodes.size(); ++n) {
+      EXPECT_EQ(inferred[i]["explanation"][n]["text"], r.inferences[i].nodes[n].text);
+      EXPECT_EQ(inferred[i]["explanation"][n]["t"].get<double>(), r.inferences[i].nodes[n].t);
+    }
+  }
+  fs::remove_all(dir);
+}
+
+TEST(ServeEventRing, AFullRingDropsAndCounts) {
+  const CompiledSession session = load_session(kSource + "/sessions/paper-tongs.yaml");
+  EventRing ring(session.rules, 2);
+  const RuleStatePtr rs = make_rule_state(*session.rules);
+  const Event e{EventKind::node_reached, 0.5, 0, 0};
+  EXPECT_TRUE(ring.push(*rs, e));
+  EXPECT_TRUE(ring.push(*rs, e));
+  EXPECT_FALSE(ring.push(*rs, e));
+  EXPECT_EQ(ring.dropped(), 1);
+  std::string message;
+  EXPECT_TRUE(ring.pop(&message));
+  EXPECT_THAT(message, HasSubstr("\"kind\":\"node_reached\""));
+  EXPECT_TRUE(ring.push(*rs, e));  // room again
+  EXPECT_TRUE(ring.pop(&message));
+  EXPECT_TRUE(ring.pop(&message));
+  EXPECT_FALSE(ring.pop(&message));
 }
 
 }  // namespace

@@ -277,6 +277,28 @@ TEST(ServeSession, ThePageThatDrivesLeavesMidSession) {
   fs::remove_all(out);
 }
 
+// Ctrl-C must end a session at once, pages or not: civetweb's threads
+// sleep in 2 s slices of poll() unless they are woken (web_server.h,
+// Server::close_pages). The bound is ten times what it takes, and far
+// below the 2 s it took before; the time is printed.
+TEST(ServeSession, StopsPromptlyWithPagesConnected) {
+  const fs::path out = scratch("stop");
+  ServeOptions o = options(out);
+  o.realtime = true;
+  Server server(o);
+  server.start();
+  Page driver(server.port()), watcher(server.port());
+  for (Page* p : {&driver, &watcher}) ASSERT_TRUE(p->wait_type("scene").has_value());
+  const auto start = std::chrono::steady_clock::now();
+  server.stop();
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  std::printf("[ measured ] stop() with two pages connected took %.1f ms\n", ms);
+  EXPECT_LT(ms, 1000) << "civetweb's threads were not woken";
+  ASSERT_EQ(server.trials().size(), 1u);
+  EXPECT_EQ(server.trials()[0].error, "");
+  fs::remove_all(out);
+}
+
 TEST(ServeSession, BadMessagesAreLoggedAndDropped) {
   const fs::path out = scratch("bad");
   Server server(options(out));

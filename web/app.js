@@ -15,9 +15,11 @@ const viewing = new URLSearchParams(location.search).has('view');  // afford vie
 const measured = { frames: 0, latencies: [], pending: null };
 window.affordPage = {
   measured,
+  software: () => software,
+  lastState: () => (state ? { t: state.t, frame: state.frame, deadline_misses: state.deadline_misses } : null),
   dragging: () => drag !== null,
   guides: () => ({ shown: guideGroups.fixed.visible, drawn: guideGroups.fixed.children.length + guideGroups.moving.children.length,
-    legend: $('guides-legend').textContent }),
+    legend: $('guides-legend').textContent, labels: guideLabels.map((l) => l.shown()) }),
   thumbOnScreen: () => (tips[0] ? toScreen(tips[0].position) : null),
   thumbClosingOnScreen: () => (tips[0] && state ? thumbClosingOnScreen() : null),
   toolOnScreen: () => (state ? toScreen(new THREE.Vector3().setFromMatrixPosition(new THREE.Matrix4().fromArray(state.object))) : null),
@@ -25,8 +27,21 @@ window.affordPage = {
 
 // ------------------------------------------------------------ the view
 
-const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-renderer.setPixelRatio(window.devicePixelRatio);
+// WebGL drawn in software (SwiftShader: headless Chromium, a machine
+// without a GPU) pays for every pixel on the CPU: there the page draws
+// without antialiasing and at one pixel per CSS pixel (serve/README.md,
+// "Speed").
+function softwareGL() {
+  const gl = document.createElement('canvas').getContext('webgl2') || document.createElement('canvas').getContext('webgl');
+  if (!gl) return true;
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  const name = info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
+  gl.getExtension('WEBGL_lose_context')?.loseContext();
+  return /swiftshader|llvmpipe|software/i.test(String(name));
+}
+const software = softwareGL();
+const renderer = new THREE.WebGLRenderer({ antialias: !software });
+renderer.setPixelRatio(software ? 1 : window.devicePixelRatio);
 view.appendChild(renderer.domElement);
 const scene3 = new THREE.Scene();
 scene3.background = new THREE.Color(0x20242a);
@@ -147,6 +162,48 @@ function buildGuides(g) {
 }
 function showGuides(on) {
   guideGroups.fixed.visible = guideGroups.moving.visible = on;
+  $('labels').hidden = !on;
+}
+
+// The guides' labels (symmetry plane, interaction space, push, force
+// amplification, load): HTML over the view, each at the screen image of
+// its anchor on its arm, moved at each frame (a transform: no layout).
+const guideLabels = [];
+function buildLabels(g) {
+  const layer = $('labels');
+  layer.innerHTML = '';
+  guideLabels.length = 0;
+  for (const l of g ? g.labels : []) {
+    const el = document.createElement('span');
+    el.textContent = l.text;
+    const c = l.colour.slice(0, 3).map((x) => Math.round(x * 255));
+    el.style.color = el.style.borderColor = `rgb(${Math.max(...c) < 90 ? c.map((x) => x + 120).join(',') : c.join(',')})`;
+    layer.appendChild(el);
+    const anchor = new THREE.Vector3(...l.anchor), at = new THREE.Vector3();
+    const arm = l.frame === 'moving' ? movingArm : fixedArm;
+    let x = 0, y = 0, visible = false, shown = '';
+    guideLabels.push({
+      place(width, height) {
+        at.copy(anchor).applyMatrix4(arm.matrix).project(camera);
+        visible = at.z > -1 && at.z < 1 && Math.abs(at.x) <= 1 && Math.abs(at.y) <= 1;
+        x = (at.x + 1) / 2 * width;
+        y = (1 - at.y) / 2 * height;
+        // Written only when it moves a pixel: an unchanged label is not painted again.
+        const style = visible ? `translate(${Math.round(x)}px, ${Math.round(y)}px)` : 'none';
+        if (style === shown) return;
+        shown = style;
+        el.style.display = visible ? '' : 'none';
+        if (visible) el.style.transform = style;
+      },
+      shown: () => ({ text: l.text, guide: g.guides[l.guide].kind, x, y, visible: visible && !layer.hidden }),
+    });
+  }
+}
+function placeLabels() {
+  if ($('labels').hidden || guideLabels.length === 0) return;
+  camera.updateMatrixWorld();
+  const w = renderer.domElement.clientWidth, h = renderer.domElement.clientHeight;
+  for (const l of guideLabels) l.place(w, h);
 }
 
 let scene = null;  // the last scene message
@@ -157,7 +214,7 @@ function buildScene(s) {
   clear(fixedArm);
   clear(movingArm);
   clear(acteeBody);
-  const metal = new THREE.MeshStandardMaterial({ color: 0x9aa4ad, metalness: 0.2, roughness: 0.5 });  // without an environment map, more metal draws darker
+  const metal = new THREE.MeshLambertMaterial({ color: 0x9aa4ad });  // without an environment map, more metal draws darker
   for (const p of s.parts) {
     const mesh = meshOf(p, metal);
     mesh.matrixAutoUpdate = false;
@@ -166,15 +223,16 @@ function buildScene(s) {
   }
   if (s.actee) {
     acteeColour = new THREE.Color(s.actee.colour);
-    acteeMaterial = new THREE.MeshStandardMaterial({ color: acteeColour, roughness: 0.7 });
+    acteeMaterial = new THREE.MeshLambertMaterial({ color: acteeColour });
     acteeBody.add(meshOf(s.actee, acteeMaterial));
   }
   buildGuides(s.guides);
+  buildLabels(s.guides);
   for (const t of tips) scene3.remove(t);
   tips.length = 0;
   s.fingertip_radius.forEach((r, i) => {
     const m = new THREE.Mesh(new THREE.SphereGeometry(r, 20, 14),
-      new THREE.MeshStandardMaterial({ color: i === 0 ? 0xff8c1a : 0xe0b090, roughness: 0.8 }));
+      new THREE.MeshLambertMaterial({ color: i === 0 ? 0xff8c1a : 0xe0b090 }));
     m.userData.finger = i;
     scene3.add(m);
     tips.push(m);
@@ -199,6 +257,21 @@ function buildScene(s) {
   setRole(role);
 }
 
+// Text is set only when it changes: an unchanged panel is not laid out
+// or painted again.
+const shownText = new Map();
+function setText(id, text) {
+  if (shownText.get(id) === text) return;
+  shownText.set(id, text);
+  $(id).textContent = text;
+}
+let readout = '', readoutAt = -Infinity, readoutTimer = null;
+function showReadout() {
+  readoutTimer = null;
+  readoutAt = performance.now();
+  setText('readout', readout);
+}
+
 let state = null;  // the last state message
 function applyState(st) {
   state = st;
@@ -210,13 +283,18 @@ function applyState(st) {
   bar('reaction-bar', st.reaction, st.max_force);
   drawReaction(st);
   bar('actee-bar', st.actee_load, st.actee_limit);
-  $('reaction').textContent = `${st.reaction.toFixed(1)} N of ${st.max_force.toFixed(0)} N`;
-  $('actee-load').textContent = st.actee_limit > 0
-    ? `${st.actee_load.toFixed(1)} N of its limit ${st.actee_limit.toFixed(0)} N (${st.condition})` : 'none';
-  $('readout').textContent = `t ${st.t.toFixed(2)} s, angle ${(st.angle * 180 / Math.PI).toFixed(1)} deg, ` +
+  setText('reaction', `${st.reaction.toFixed(1)} N of ${st.max_force.toFixed(0)} N`);
+  setText('actee-load', st.actee_limit > 0
+    ? `${st.actee_load.toFixed(1)} N of its limit ${st.actee_limit.toFixed(0)} N (${st.condition})` : 'none');
+  // The readout's time changes every state: written 10 times a second
+  // (each change lays out and paints the panel again, in software).
+  readout = `t ${st.t.toFixed(2)} s, angle ${(st.angle * 180 / Math.PI).toFixed(1)} deg, ` +
     `squeeze ${(st.squeeze * 1000).toFixed(1)} mm (asked ${(st.squeeze_target * 1000).toFixed(1)} mm), ` +
     `${st.grasped ? 'grasped' : st.gripping ? 'closing' : 'open'}${st.held ? ', held' : ''}; ` +
     `late frames ${st.deadline_misses}`;
+  const wait = readoutAt + 100 - performance.now();
+  if (wait <= 0) showReadout();
+  else if (!readoutTimer) readoutTimer = setTimeout(showReadout, wait);  // the last state shows too
   plot(st);
   const p = measured.pending;
   if (p && st.applied_seq >= p.seq) {
@@ -241,13 +319,17 @@ function drawReaction(st) {
 
 // A strip chart of the last 10 s of session time: the thumb's reaction and
 // the actee's load (against the larger of the hand's force and the limit),
-// and the angle (against the tool's range).
+// and the angle (against the tool's range). A point every 1/30 s, drawn
+// when one is added, on a canvas kept in memory (willReadFrequently: not
+// through the software GL a headless browser has).
 const history = [];
+const timeline = $('timeline').getContext('2d', { willReadFrequently: true });
 function plot(st) {
   if (history.length && st.t < history[history.length - 1].t) history.length = 0;  // a new trial
+  if (history.length && st.t - history[history.length - 1].t < 1 / 30) return;
   history.push({ t: st.t, reaction: st.reaction, load: st.actee_load, angle: st.angle });
   while (history.length && history[0].t < st.t - 10) history.shift();
-  const c = $('timeline'), g = c.getContext('2d');
+  const c = timeline.canvas, g = timeline;
   g.clearRect(0, 0, c.width, c.height);
   const top = Math.max(st.max_force, st.actee_limit, 1);
   const x = (t) => (t - (st.t - 10)) / 10 * c.width;
@@ -264,9 +346,12 @@ function plot(st) {
 }
 
 function bar(id, value, limit) {
-  const el = $(id);
   const f = limit > 0 ? value / limit : 0;
-  el.firstElementChild.style.width = `${Math.max(0, Math.min(1, f)) * 100}%`;
+  const width = `${(Math.max(0, Math.min(1, f)) * 100).toFixed(1)}%`;
+  if (shownText.get(id) === width) return;  // unchanged: not laid out again
+  shownText.set(id, width);
+  const el = $(id);
+  el.firstElementChild.style.width = width;
   el.classList.toggle('over', f >= 1);
 }
 
@@ -428,6 +513,7 @@ function frame() {
   }
   if (!viewing && role === 'driver' && scene && state) pollGamepad(state, scene.limits.max_squeeze, send);
   controls.update();
+  placeLabels();
   renderer.render(scene3, camera);
   requestAnimationFrame(frame);
 }
