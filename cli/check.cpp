@@ -14,25 +14,10 @@ namespace afford::cli {
 
 namespace {
 
-std::string check_device(const Node& root) { return "device " + read_device_description(root).name; }
-
-std::string check_measurement(const Node& root) {
-  const Measurement m = read_measurement(root);
-  return "measurement " + m.name + ", " + std::to_string(m.traces.size()) + " traces";
-}
-
-// A rule test's keys, and the session and rules it names; not for a case
-// whose point is that they fail to load (`error:`).
-std::string check_rule_test(const Node& root) {
-  const RuleCase c = read_rule_case(root);
-  if (!c.error) compile_rule_case(c);
-  return "rule test " + c.name;
-}
-
 int check_files(const std::vector<std::string>& files) {
-  add_file_kind("device", check_device);  // device descriptions live in devices/
-  add_file_kind("measurement", check_measurement);  // and measurements in gap/
-  add_file_kind("test", check_rule_test);  // rule tests live in tests/rules/
+  add_device_file_kind();       // device descriptions live in devices/
+  add_measurement_file_kind();  // measurements in gap/
+  add_rule_test_file_kind();    // rule tests in tests/rules/
   int errors = 0;
   for (const std::string& path : files) {
     try {

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "did_you_mean.h"
+#include "validate.h"
 
 namespace afford {
 namespace {
@@ -387,6 +388,10 @@ DeviceDescription read_device_description(const Node& root) {
 
 DeviceDescription load_device_description(const std::string& path) {
   return read_device_description(load_yaml_file(path));
+}
+
+void add_device_file_kind() {
+  add_file_kind("device", [](const Node& root) { return "device " + read_device_description(root).name; });
 }
 
 }  // namespace afford

@@ -128,6 +128,9 @@ DeviceDescription load_device_description(const std::string& path);
 DeviceDescription read_device_description(const Node& root);
 const MapSchema& device_schema();  // the keys of a device description
 
+// Lets validate_file (afford check, afford.check) read device descriptions.
+void add_device_file_kind();
+
 // Every target name a field's `to:` may give ("thumb.distal", "hand.x", ...).
 std::vector<std::string> device_target_names();
 

@@ -15,6 +15,7 @@
 #include "rules_impl.h"
 #include "run.h"
 #include "units.h"
+#include "validate.h"
 
 namespace afford {
 namespace {
@@ -484,6 +485,14 @@ void merge_coverage(std::vector<RulesCoverage>* total, const RulesCoverage& run)
       }
     }
   }
+}
+
+void add_rule_test_file_kind() {
+  add_file_kind("test", [](const Node& root) {
+    const RuleCase c = read_rule_case(root);
+    if (!c.error) compile_rule_case(c);
+    return "rule test " + c.name;
+  });
 }
 
 }  // namespace afford

@@ -100,6 +100,11 @@ RuleCase load_rule_case(const std::string& path);
 // rules file that is missing is reported at the case's key that names it.
 CompiledSession compile_rule_case(const RuleCase& c);
 
+// Lets validate_file (afford check, afford.check) read rule tests: a case's
+// keys, and the session and rules it names (not for a case whose point is
+// that they fail to load, `error:`).
+void add_rule_test_file_kind();
+
 // ------------------------------------------------------------ a run
 
 struct CaseRun {

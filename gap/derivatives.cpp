@@ -71,7 +71,6 @@ Derivatives local_derivatives(const std::vector<double>& t, const std::vector<do
   const Eigen::MatrixXd cov = (a.transpose() * a).inverse();
   const Eigen::MatrixXd even = cov * a.transpose();  // coefficients = even * window
   d.rate_noise_gain = degree >= 1 ? std::sqrt(cov(1, 1)) / even_h : 0.0;
-  d.accel_noise_gain = degree >= 2 ? 2 * std::sqrt(cov(2, 2)) / (even_h * even_h) : 0.0;
   // What the polynomial leaves of the window: (I - A (A'A)^-1 A') b; pure
   // noise leaves (w - degree - 1) / w of its variance.
   const Eigen::MatrixXd leaves = Eigen::MatrixXd::Identity(w, w) - a * even;

@@ -16,7 +16,6 @@ struct Derivatives {
   size_t half_width = 0;      // samples each side of the fit: nearer the ends it is one-sided
   int degree = 0;             // the polynomial's
   double rate_noise_gain = 0; // the rate's noise per unit of y's (white) noise, 1/s, inside
-  double accel_noise_gain = 0; // the acceleration's, 1/s^2
   // The RMS of y about the polynomial over each sample's window, y's unit:
   // white noise of deviation s leaves about s * misfit_noise_gain; much
   // more is motion the polynomial cannot follow (a ringing faster than the

@@ -7,6 +7,7 @@
 #include "load.h"
 #include "trace_table.h"
 #include "units.h"
+#include "validate.h"
 
 namespace afford {
 namespace {
@@ -249,6 +250,13 @@ Measurement load_measurement(const std::string& path) { return read_measurement(
 Model compile_measurement(const Measurement& m) {
   if (!m.object) throw LogicError("compile_measurement() on a plates measurement");
   return compile(*m.object, m.actee ? &*m.actee : nullptr, nullptr, m.options);
+}
+
+void add_measurement_file_kind() {
+  add_file_kind("measurement", [](const Node& root) {
+    const Measurement m = read_measurement(root);
+    return "measurement " + m.name + ", " + std::to_string(m.traces.size()) + " traces";
+  });
 }
 
 }  // namespace afford

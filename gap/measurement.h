@@ -64,6 +64,9 @@ Measurement load_measurement(const std::string& path);
 Measurement read_measurement(const Node& root);
 const MapSchema& measurement_schema();  // the keys of a measurement file
 
+// Lets validate_file (afford check, afford.check) read measurements.
+void add_measurement_file_kind();
+
 // The model a lever measurement describes (no agent).
 Model compile_measurement(const Measurement& m);
 

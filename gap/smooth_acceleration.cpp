@@ -78,7 +78,8 @@ SmoothAcceleration smooth_acceleration(const std::vector<double>& t, const std::
     const size_t shift = m - current.weights.size() / 2;
     for (size_t j = 0; j < current.weights.size(); ++j) difference[shift + j] -= current.weights[j];
     const double difference_variance = std::pow(norm(difference) * noise, 2);
-    const double saved = (std::pow(norm(current.weights), 2) - std::pow(norm(wider.weights), 2)) * noise * noise;
+    const double wider_gain = norm(wider.weights);
+    const double saved = (std::pow(norm(current.weights), 2) - wider_gain * wider_gain) * noise * noise;
     excess_before[0] = usable_before[0] = 0;
     for (size_t i = 0; i < n; ++i) {
       const bool both = wider.usable[i] && current.usable[i];
@@ -100,7 +101,7 @@ SmoothAcceleration smooth_acceleration(const std::vector<double>& t, const std::
         continue;
       }
       out.accel[i] = wider.accel[i];
-      out.noise_gain[i] = norm(wider.weights);
+      out.noise_gain[i] = wider_gain;
     }
     current = std::move(wider);
   }

@@ -22,24 +22,11 @@
 namespace afford::python {
 namespace {
 
-// The kinds of file defined outside the engine, as `afford check` adds them
-// (cli/check.cpp): device descriptions, measurements, rule tests.
-std::string check_device(const Node& root) { return "device " + read_device_description(root).name; }
-std::string check_measurement(const Node& root) {
-  const Measurement m = read_measurement(root);
-  return "measurement " + m.name + ", " + std::to_string(m.traces.size()) + " traces";
-}
-std::string check_rule_test(const Node& root) {
-  const RuleCase c = read_rule_case(root);
-  if (!c.error) compile_rule_case(c);
-  return "rule test " + c.name;
-}
-
 py::dict check(const std::string& path) {
   static const bool kinds_added = [] {
-    add_file_kind("device", check_device);
-    add_file_kind("measurement", check_measurement);
-    add_file_kind("test", check_rule_test);
+    add_device_file_kind();  // the kinds defined outside the engine, as afford check adds them
+    add_measurement_file_kind();
+    add_rule_test_file_kind();
     return true;
   }();
   (void)kinds_added;
