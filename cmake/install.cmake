@@ -1,17 +1,25 @@
-# cmake --install BUILD --prefix P: the afford program, the five libraries
-# (static), their headers in include/afford/, the shipped data in
-# share/afford/ and a CMake package, so that another project can write
-#   find_package(afford 0.10 REQUIRED)
+# cmake --install BUILD --prefix P: the afford program, the six libraries
+# (static), each library's headers in include/afford/<library>/, the shipped
+# data in share/afford/ and a CMake package, so that another project can write
+#   find_package(afford 0.11 REQUIRED)
 #   target_link_libraries(app PRIVATE afford::engine)
-# and `#include <afford/model.h>`.
+# and `#include <afford/engine/model.h>`: the folder names the target to link.
 include(CMakePackageConfigHelpers)
 
-set(AFFORD_LIBRARIES afford_engine afford_devices afford_gap afford_render afford_explore)
+# The libraries, each named by its source folder (afford::<folder>).
+set(AFFORD_INSTALLED_FOLDERS engine devices render gap explore mjcf)
 install(TARGETS afford RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS ${AFFORD_LIBRARIES} EXPORT afford-targets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(folder engine devices gap render explore)
+foreach(folder IN LISTS AFFORD_INSTALLED_FOLDERS)
+  install(TARGETS afford_${folder} EXPORT afford-targets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
   file(GLOB headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${folder}/*.h)
-  install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/afford)
+  # The MuJoCo harness is the tests' (afford_mjcf_mujoco), not the library's.
+  list(FILTER headers EXCLUDE REGEX "/mujoco_harness\\.h$")
+  install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/afford/${folder})
+  # A user writes <afford/engine/model.h>; the headers include their own
+  # library's and the libraries' below by name ("model.h"), as in the source
+  # tree, which the library's own folder on the include path resolves.
+  target_include_directories(afford_${folder} PUBLIC
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/afford/${folder}>)
 endforeach()
 
 # The shipped data, laid out as in the source tree (sessions name

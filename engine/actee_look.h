@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace afford {
@@ -23,7 +24,7 @@ struct ActeeLook {
 // The default inside of an outside colour: halfway to white.
 inline ActeeLook::Srgb lighter_half(const ActeeLook::Srgb& c) {
   ActeeLook::Srgb out{};
-  for (size_t k = 0; k < 3; ++k) out[k] = static_cast<std::uint8_t>((c[k] + 256) / 2);
+  for (std::size_t k = 0; k < 3; ++k) out[k] = static_cast<std::uint8_t>((c[k] + 256) / 2);
   return out;
 }
 

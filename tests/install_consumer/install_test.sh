@@ -1,11 +1,13 @@
 #!/bin/sh
 # install_test.sh CMAKE BUILD_DIR CXX GENERATOR: installs the build into a fresh
 # prefix outside the build tree, then
-#  1. builds tests/install_consumer against it (find_package(afford 0.10))
+#  1. builds tests/install_consumer against it (find_package(afford 0.11))
 #     and runs it on the installed data ($AFFORD_DATA_DIR): it must print
-#     the nutcracker's lever and the paper's pinch, hold and crash;
+#     the nutcracker's lever, the paper's pinch, hold and crash and the
+#     root of its MuJoCo scene (afford::mjcf);
 #     and its stepping example afford_step (docs/libraries.md);
-#  2. runs the installed afford from another folder without
+#  2. builds every installed header with only its own library linked;
+#  3. runs the installed afford from another folder without
 #     $AFFORD_DATA_DIR: it must find the installed data beside itself
 #     (the actees `describe` lists come from there).
 set -eu
@@ -27,11 +29,38 @@ expect() {
 }
 
 "$cmake" --install "$build" --prefix "$prefix" >/dev/null
-for f in bin/afford include/afford/model.h include/afford/data_dir.h share/afford/rules/functions.yaml \
+for f in bin/afford include/afford/engine/model.h include/afford/engine/data_dir.h include/afford/devices/scripted_agent.h \
+         include/afford/render/image.h include/afford/gap/diagnose.h include/afford/explore/explore.h \
+         include/afford/mjcf/mjcf_scene.h share/afford/rules/functions.yaml \
          share/afford/objects/nutcracker.yaml share/afford/devices/glove.yaml \
          lib/cmake/afford/afford-config.cmake lib/cmake/afford/afford-config-version.cmake; do
   [ -e "$prefix/$f" ] || fail "not installed: $f"
 done
+
+# Each library's headers, all of them in one file, build with that one
+# target linked: the folder a header is installed in names what it needs.
+checks="$prefix/headers-check"
+mkdir -p "$checks"
+{
+  echo "cmake_minimum_required(VERSION 3.25)"
+  echo "project(afford_headers LANGUAGES CXX)"
+  echo "find_package(afford 0.11 REQUIRED)"
+} >"$checks/CMakeLists.txt"
+for library in engine devices render gap explore mjcf; do
+  for h in "$prefix/include/afford/$library"/*.h; do
+    echo "#include <afford/$library/$(basename "$h")>"
+  done >"$checks/$library.cpp"
+  echo "int main() { return 0; }" >>"$checks/$library.cpp"
+  {
+    echo "add_executable(headers_$library $library.cpp)"
+    echo "target_compile_features(headers_$library PRIVATE cxx_std_20)"
+    echo "target_link_libraries(headers_$library PRIVATE afford::$library)"
+  } >>"$checks/CMakeLists.txt"
+done
+"$cmake" -S "$checks" -B "$checks/build" -G "$generator" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cxx" \
+         -DCMAKE_PREFIX_PATH="$prefix" >"$checks/build.log" 2>&1 &&
+  "$cmake" --build "$checks/build" >>"$checks/build.log" 2>&1 ||
+  { cat "$checks/build.log"; fail "a library's headers do not build with its own target alone"; }
 
 "$cmake" -S "$here" -B "$prefix/consumer-build" -G "$generator" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cxx" \
          -DCMAKE_PREFIX_PATH="$prefix" >"$prefix/consumer-configure.log" 2>&1 ||
@@ -46,6 +75,11 @@ expect "^nutcracker: type2, mechanical advantage 7\.20 \(effort at 0\.180 m, loa
 expect "^pinch at [0-9]+\.[0-9]{3} s$" "$out"
 expect "^hold at [0-9]+\.[0-9]{3} s$" "$out"
 expect "^crash at [0-9]+\.[0-9]{3} s$" "$out"
+expect '^mjcf: <mujoco model="paper-nutcracker">$' "$out"
+# Headers grouped by library: nothing flat in include/afford/, and the test
+# harness's header is not installed.
+[ -z "$(find "$prefix/include/afford" -maxdepth 1 -type f)" ] || fail "headers installed flat in include/afford/"
+[ ! -e "$prefix/include/afford/mjcf/mujoco_harness.h" ] || fail "the MuJoCo harness header is installed"
 
 # The stepping example (docs/libraries.md): with the script's own thumb it
 # infers what run_session() inferred, at the same times.

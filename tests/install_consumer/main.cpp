@@ -2,17 +2,20 @@
 // session (paths inside the data folder, found as afford finds them:
 // $AFFORD_DATA_DIR or the installed share/afford) through the installed
 // headers, prints the object's lever and its best mechanical advantage,
-// then runs the session and prints every function inferred.
-#include <afford/data_dir.h>
-#include <afford/errors.h>
-#include <afford/lever.h>
-#include <afford/load.h>
-#include <afford/model.h>
-#include <afford/run.h>
-#include <afford/scripted_agent.h>
-#include <afford/session.h>
+// then runs the session and prints every function inferred and the root
+// element of its MuJoCo scene.
+#include <afford/engine/data_dir.h>
+#include <afford/engine/errors.h>
+#include <afford/engine/lever.h>
+#include <afford/engine/load.h>
+#include <afford/engine/model.h>
+#include <afford/engine/run.h>
+#include <afford/engine/session.h>
+#include <afford/devices/scripted_agent.h>
+#include <afford/mjcf/mjcf_scene.h>
 
 #include <cstdio>
+#include <string>
 #include <exception>
 
 int main(int argc, char** argv) {
@@ -31,6 +34,12 @@ int main(int argc, char** argv) {
     afford::ScriptedAgent agent(session.script);
     const afford::RunResult r = afford::run_session(session.model, *session.rules, agent);
     for (const afford::Inference& i : r.inferences) std::printf("%s at %.3f s\n", i.function.c_str(), i.t);
+
+    // The session as a MuJoCo scene (afford::mjcf), as `afford export --mjcf` writes it.
+    const std::string scene = afford::export_mjcf(session);
+    const std::size_t root = scene.find("<mujoco ");
+    std::printf("mjcf: %s\n", root == std::string::npos ? "no <mujoco> element"
+                                                          : scene.substr(root, scene.find('>', root) + 1 - root).c_str());
     return 0;
   } catch (const afford::DataError& e) {
     std::fprintf(stderr, "%s\n", e.what());

@@ -5,12 +5,12 @@
 // further toward the fixed arm (a negative offset: away from it; a controller
 // of yours would set it). Prints
 // each function as it is inferred and the largest force on the actee.
-#include <afford/data_dir.h>
-#include <afford/errors.h>
-#include <afford/rules.h>
-#include <afford/scripted_agent.h>
-#include <afford/session.h>
-#include <afford/state.h>
+#include <afford/engine/data_dir.h>
+#include <afford/engine/errors.h>
+#include <afford/engine/rules.h>
+#include <afford/engine/session.h>
+#include <afford/engine/state.h>
+#include <afford/devices/scripted_agent.h>
 
 #include <algorithm>
 #include <cstdio>
