@@ -152,7 +152,7 @@ void describe_session(const CompiledSession& s) {
     if (!s.actee_names.empty()) std::cout << "'" << s.actee_names[i] << "': ";
     describe_actee(*models[i], levers.back());
   }
-  std::cout << "grips of the script (in the lever's static balance; engine/squeeze.h):\n";
+  std::cout << "grips of the script (in the lever's static balance; engine/model/squeeze.h):\n";
   // Which actee is on the tool at a keyframe: the last one taken by then.
   size_t in_play = s.first_actee;
   size_t next_change = 0;

@@ -9,7 +9,7 @@
 // explore.json; --merge joins the shards' into the files of a whole run.
 // It says how many sessions it will run before it starts, and shows its
 // progress on stderr (cli/progress.h). The output folder is checked before
-// the work starts (engine/output_file.h), and cleared of the files an
+// the work starts (engine/base/output_file.h), and cleared of the files an
 // earlier explore wrote there and this one did not (an actee's old maps).
 #include <filesystem>
 #include <iostream>

@@ -28,7 +28,7 @@ struct ExportOptions {
   std::string file, out;
   bool mjcf = false;
   bool urdf = false;  // the tool as URDF + STL meshes (export_urdf.cpp)
-  bool force = false;  // replace an existing file afford did not write (engine/output_file.h)
+  bool force = false;  // replace an existing file afford did not write (engine/base/output_file.h)
 };
 
 int export_command(const ExportOptions& o) {

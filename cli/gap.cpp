@@ -88,7 +88,7 @@ int gap(const GapOptions& o) {
   if (!o.effects.empty() && !parse_library(o.effects, &options.library, &error)) return usage_error(error);
   const Measurement m = load_measurement(file);
   check_rows(m);
-  // Its files are never outputs; files afford did not write are kept (engine/output_file.h).
+  // Its files are never outputs; files afford did not write are kept (engine/base/output_file.h).
   const OutputScope scope({.writer = "gap", .force = o.force, .inputs = m.files});
   if (o.probe) {  // active modelling: the lever and spring from a probing trace
     const ProbeResult p = probe_lever(m);

@@ -77,7 +77,7 @@ int live(const LiveOptions& o) {
   const std::filesystem::path dir = output_dir(out_dir, session.name);
   std::vector<std::string> inputs = session.files;
   inputs.push_back(device_file);
-  const OutputScope scope({.writer = "live", .force = false, .inputs = inputs});  // engine/output_file.h
+  const OutputScope scope({.writer = "live", .force = false, .inputs = inputs});  // engine/base/output_file.h
   SessionOutputs outputs(dir);
   if (record.empty()) record = (dir / "live.afrec").string();
   std::optional<Recorder> recorder;
@@ -132,7 +132,7 @@ int live(const LiveOptions& o) {
     }
     std::printf("recorded %lld frames to %s\n", static_cast<long long>(recorder->frames()), record.c_str());
   }
-  outputs.close();  // checked, and renamed into place (engine/output_file.h)
+  outputs.close();  // checked, and renamed into place (engine/base/output_file.h)
   std::printf("wrote %s\n", outputs.written().c_str());
   return 0;
 }

@@ -51,7 +51,7 @@ struct ModelOptions {
   double tolerance = modelling::kSymmetryTolerance;
   bool json = false;
   std::string out;                 // the object file to write
-  bool force = false;              // --out may replace a file afford did not write (engine/output_file.h)
+  bool force = false;              // --out may replace a file afford did not write (engine/base/output_file.h)
   std::string hinge, range;        // two meshes: "X,Y,Z,AX,AY,AZ" (mm, plain), "MIN,MAX" (deg)
   std::string spring, spring_at;   // "K_N_M_PER_RAD,REST_DEG", "MM"
   std::string emphasis, application;  // "FROM,TO", mm

@@ -67,7 +67,7 @@ int replay(const ReplayOptions& o) {
   const std::string& rules_file = o.rules_file;
   const std::string& out_dir = o.out_dir;
   const bool json = o.json;
-  // The recording is an input: never an output (engine/output_file.h).
+  // The recording is an input: never an output (engine/base/output_file.h).
   const OutputScope scope({.writer = "replay", .force = o.force, .inputs = {file}});
   const Recording rec = read_recording(file);
   const CompiledSession session = load_recorded_session(rec);

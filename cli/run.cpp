@@ -4,7 +4,7 @@
 // (DIR/trace.csv); DIR defaults to out/<session name>. With --watch it runs
 // again whenever a file the session uses changes. --record FILE also writes
 // a recording (devices/recording.h) for `afford replay`. Outputs go through
-// engine/output_file.h: an existing file afford did not write, or one of the
+// engine/base/output_file.h: an existing file afford did not write, or one of the
 // session's own files, is not replaced (--force replaces the former).
 #include <chrono>
 #include <cmath>

@@ -45,7 +45,7 @@ int serve_session(ServeCliOptions o) {
                  s.bind.c_str());
   }
   if (s.bind == "localhost") s.bind = "127.0.0.1";
-  // Trials go through engine/output_file.h: never over the session, nor over files afford did not write.
+  // Trials go through engine/base/output_file.h: never over the session, nor over files afford did not write.
   const OutputScope scope({.writer = "serve", .force = false, .inputs = {s.session_file}});
   serve::Server server(s);  // DataError: file:line:col
   server.start();

@@ -1,6 +1,6 @@
 // The files every command that runs a session writes into its output
 // directory, the same for `run`, `replay` and `live`: DIR/timeline.jsonl
-// and DIR/trace.csv (formats in engine/trace.h and docs/trace-format.md).
+// and DIR/trace.csv (formats in engine/session/trace.h and docs/trace-format.md).
 #pragma once
 
 #include <cstdio>
@@ -12,7 +12,7 @@
 
 namespace afford::cli {
 
-// An output file whose writes are checked when it is closed (engine/files.h).
+// An output file whose writes are checked when it is closed (engine/base/files.h).
 using OutFile = CheckedFile;
 
 // DIR as given, or out/<session name> when none was.

@@ -1,6 +1,6 @@
 // afford test [DIR] [--coverage]: runs every rule test case under DIR
 // (default tests/rules; every *.yaml file in it and its subfolders is a
-// case, engine/rule_tests.h), in the order of their paths, and prints one
+// case, engine/session/rule_tests.h), in the order of their paths, and prints one
 // line per case:
 //   PASS name (file)
 //   FAIL name (file): reason

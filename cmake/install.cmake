@@ -1,21 +1,25 @@
-# cmake --install BUILD --prefix P: the afford program, the six libraries
+# cmake --install BUILD --prefix P: the afford program, the libraries
 # (static), each library's headers in include/afford/<library>/, the shipped
 # data in share/afford/ and a CMake package, so that another project can write
 #   find_package(afford 0.11 REQUIRED)
-#   target_link_libraries(app PRIVATE afford::engine)
-# and `#include <afford/engine/model.h>`: the folder names the target to link.
+#   target_link_libraries(app PRIVATE afford::session)
+# and `#include <afford/session/session.h>`: the folder names the target to
+# link. afford::engine links the engine's five libraries and the guides.
 include(CMakePackageConfigHelpers)
 
-# The libraries, each named by its source folder (afford::<folder>).
-set(AFFORD_INSTALLED_FOLDERS engine devices render gap explore mjcf)
+# The libraries, each named by its source folder (afford::<name>).
+set(AFFORD_INSTALLED_FOLDERS engine/base engine/load engine/model engine/rules engine/session guides devices render
+    gap explore mjcf)
 install(TARGETS afford RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-foreach(folder IN LISTS AFFORD_INSTALLED_FOLDERS)
+install(TARGETS afford_engine EXPORT afford-targets)
+foreach(path IN LISTS AFFORD_INSTALLED_FOLDERS)
+  cmake_path(GET path FILENAME folder)
   install(TARGETS afford_${folder} EXPORT afford-targets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-  file(GLOB headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${folder}/*.h)
+  file(GLOB headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${path}/*.h)
   # The MuJoCo harness is the tests' (afford_mjcf_mujoco), not the library's.
   list(FILTER headers EXCLUDE REGEX "/mujoco_harness\\.h$")
   install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/afford/${folder})
-  # A user writes <afford/engine/model.h>; the headers include their own
+  # A user writes <afford/model/model.h>; the headers include their own
   # library's and the libraries' below by name ("model.h"), as in the source
   # tree, which the library's own folder on the include path resolves.
   target_include_directories(afford_${folder} PUBLIC

@@ -1,6 +1,6 @@
 // Recordings: a session written to a file as it runs, so that it can be
 // replayed bit for bit (`afford replay`) and re-run under edited function
-// models. The recorder is an Observer (engine/observer.h); the reader and
+// models. The recorder is an Observer (engine/rules/observer.h); the reader and
 // the replaying SampleSource are in recording_source.h.
 //
 // The format (version 1), little-endian throughout:
@@ -40,7 +40,7 @@
 //   f64[12]  the hand's pose: rotation (column-major 3x3), then translation, m
 //   f64[15]  fingertips, 5 x (x, y, z), m, world, thumb first
 //   f64[15]  joint angles, 5 fingers x 3 joints, rad
-//   u64      state_hash (engine/state.h) after the frame's step
+//   u64      state_hash (engine/model/state.h) after the frame's step
 //   u16      event count, then per event:
 //     u8     kind (EventKind)
 //     u16    function index, u16 node index
@@ -140,7 +140,7 @@ inline double get_f64(const unsigned char* p) { return std::bit_cast<double>(get
 // The least bytes a frame takes on disk (a frame without events).
 inline constexpr std::uint64_t kMinFrameRecordBytes = kRecordOverhead + kFrameFixedPayload;
 
-// Writes a recording (an OutputFile, engine/output_file.h). A new file is
+// Writes a recording (an OutputFile, engine/base/output_file.h). A new file is
 // written in place, so that a crash leaves what was recorded at its name;
 // an earlier recording (recognised by its magic number), or another file
 // with --force, is replaced by rename only when the session ends cleanly.

@@ -1,5 +1,5 @@
 // The scripted agent: a SampleSource that plays a compiled Script
-// (engine/script.h), interpolating between its keyframes linearly in time.
+// (engine/session/script.h), interpolating between its keyframes linearly in time.
 #pragma once
 
 #include <vector>

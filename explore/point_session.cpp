@@ -36,7 +36,7 @@ Script point_script(const Model& m, const ForcedLever& jaws, const PointDrive& d
   arm_outer_face(m, Arm::fixed, r, &index_y, &index_z);
   // The wrist midway across between the thumb (on the moving arm at rest,
   // turned about the hinge's z) and the index, so that a wide-open tool
-  // keeps both within the fingers' reach (engine/reach.h).
+  // keeps both within the fingers' reach (engine/model/reach.h).
   const double c = std::cos(m.theta_rest), s = std::sin(m.theta_rest);
   const double across = 0.5 * (r * s + face_y * c + index_y);  // m, tool frame y
   const double behind = r >= 0 ? -kWristBehind : kWristBehind;

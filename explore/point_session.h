@@ -35,7 +35,7 @@ struct PointDrive {
   double effort = 0;  // N, the push at the thumb the squeeze aims at
 };
 
-// The lever at rest with the actee (engine/squeeze.h's lever_at_start),
+// The lever at rest with the actee (engine/model/squeeze.h's lever_at_start),
 // found once per model (an FCL bisection) and shared by every point on it;
 // the squeeze for a point's effort is squeeze.h's squeeze_for_effort.
 // The script of one grid point, compiled against the model (which must

@@ -47,7 +47,7 @@ std::vector<TurnSpan> turn_spans(const GridInfo& g, const ExploreResult& r);
 std::string turn_span_text(const GridInfo& g, const TurnSpan& t);
 
 // Writes every file above into dir (made if missing); returns their paths.
-// A failed write throws WriteError (engine/files.h) naming the path.
+// A failed write throws WriteError (engine/base/files.h) naming the path.
 std::vector<std::string> write_explore(const std::string& dir, const GridInfo& g, const ExploreResult& r);
 
 }  // namespace afford

@@ -1,5 +1,5 @@
 // Fuzzes the predicate language: the bytes are one predicate (`when:`),
-// parsed alone (engine/expr.h) and then compiled with its function model
+// parsed alone (engine/rules/expr.h) and then compiled with its function model
 // (rules_compile.cpp) as if written in rules/functions.yaml. The first
 // byte says whether the YAML quotes it (locations shift by the quote). A DataError is the expected
 // answer; anything else is a bug.

@@ -11,7 +11,7 @@
 // turned by the opening.
 //
 // The object file holds the row at theta_max (`interaction_space`), which
-// the engine (engine/derive.h) uses instead of the wedge of flat jaw faces
+// the engine (engine/model/derive.h) uses instead of the wedge of flat jaw faces
 // through the pivot, |r| sin(theta_max) wide. `wedge_*` is that figure, so
 // the report says how far the real shape departs from the wedge.
 #pragma once

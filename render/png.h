@@ -22,7 +22,7 @@ struct PngError : std::runtime_error {
 std::vector<std::uint8_t> encode_png(const Image& img);
 Image decode_png(const std::vector<std::uint8_t>& bytes);  // throws PngError
 
-// Files: write_png throws WriteError (engine/files.h: the path and the
+// Files: write_png throws WriteError (engine/base/files.h: the path and the
 // reason) when the file cannot be written to the last byte; read_png throws
 // PngError (with the path) when it cannot be read.
 void write_png(const std::string& path, const Image& img);

@@ -33,7 +33,7 @@ constexpr Colour kAgentContact{0.10f, 0.65f, 0.95f};
 constexpr Colour kEffortArrow{0.98f, 0.62f, 0.05f};
 constexpr Colour kActeeArrow{0.85f, 0.10f, 0.10f};
 
-// Knuckles in the hand frame (engine/script.h: +x to the fingers, +y to the
+// Knuckles in the hand frame (engine/session/script.h: +x to the fingers, +y to the
 // thumb, the palm facing -z) and the palm box.
 const Vector3d kKnuckle[kFingers] = {{0.025, 0.040, -0.015},
                                      {0.075, 0.025, -0.012},
@@ -433,7 +433,7 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
   }
 
   // The hand, translucent, last: the palm box and the fingers. With the
-  // agent's reach each finger is its chain of links (engine/reach.h), the
+  // agent's reach each finger is its chain of links (engine/model/reach.h), the
   // joints where its kinematics put them; without it a straight finger
   // from a knuckle to the tip.
   if (o.hand && m.has_agent) {

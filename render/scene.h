@@ -43,7 +43,7 @@ struct RenderOptions {
   bool ground = true;             // a grid under the scene
   double force_scale = 0;         // m of arrow per N; 0: from the scene (see force_scale())
   double ground_z = 0;            // m, world height of the grid (frame_scene sets it)
-  // The guides (engine/guides.h) to draw over the scene, posed with the
+  // The guides (guides/guides.h) to draw over the scene, posed with the
   // arm: surfaces translucent, the advantage map as coloured lines, the
   // labels as text. Not owned; nullptr: none.
   const Guides* guides = nullptr;

@@ -1,6 +1,6 @@
 // The rules' events, from the frame thread to the sender thread without
 // allocating: the frame copies each event, and for an inference what its
-// explanation needs (its node times and values, engine/rules_explain.h),
+// explanation needs (its node times and values, engine/rules/rules_explain.h),
 // into a ring sized when the trial begins; the sender takes them out and
 // writes the event messages (protocol.h), text and all, off the frame
 // thread.

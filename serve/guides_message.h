@@ -1,4 +1,4 @@
-// The guides of `afford guide` (engine/guides.h: symmetry plane, interaction
+// The guides of `afford guide` (guides/guides.h: symmetry plane, interaction
 // space, emphasis, force amplification) as JSON for the page's scene: each
 // primitive in its arm's frame ("fixed": the object frame, "moving": the
 // moving arm's), so the page hangs it on that arm and it follows the tool;

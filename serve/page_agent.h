@@ -1,7 +1,7 @@
 // The hand a page drives: the page says what the hand should do (close the
 // fingers on the arms, squeeze the thumb so far, move the hand there, open
 // the fingers) and this turns it into agent samples exactly as a session's
-// script would (engine/script.h): a grip puts the thumb on the moving arm's
+// script would (engine/session/script.h): a grip puts the thumb on the moving arm's
 // outer face, turned about the pivot by squeeze / |D_ag| past the rest
 // angle, and the index on the fixed arm's; while the fingers hold the tool
 // it moves with the hand; after they open, the tool stays where it was.

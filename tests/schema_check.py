@@ -33,7 +33,7 @@ BROKEN = ["tests/data/**/*.yaml"]
 UNKNOWN_KEY = "not_a_key_of_this_mapping"
 # A file's kind is its first key; the schema of a rule test is rule_test.
 SCHEMA_OF_KIND = {"test": "rule_test"}
-# The loader's errors about keys (engine/yaml_reader.cpp, MapReader).
+# The loader's errors about keys (engine/base/yaml_reader.cpp, MapReader).
 KEY_ERROR = re.compile(r"expected one of the keys of|found no such key")
 
 failures = []

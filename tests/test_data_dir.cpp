@@ -1,4 +1,4 @@
-// Where the shipped data is found (engine/data_dir.h): the order of the
+// Where the shipped data is found (engine/base/data_dir.h): the order of the
 // places looked in, and the errors that name them.
 #include <gtest/gtest.h>
 #include <gmock/gmock.h>

@@ -152,7 +152,7 @@ TEST_P(RoundTrip, TheToolComesBackFromItsUrdf) {
 
   // The interaction space from the shape. The shipped jaws are flat faces
   // through the pivot, so at opening theta the gap at distance r is the
-  // wedge's, |r| sin theta (engine/derive.h takes L_is as that wedge at
+  // wedge's, |r| sin theta (engine/model/derive.h takes L_is as that wedge at
   // theta_max over the application region): the same to 1 um (the STL's
   // single precision), and nothing where the jaws are closed.
   const modelling::JawGaps& jaws = m.jaws;

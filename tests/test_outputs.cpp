@@ -1,6 +1,6 @@
 // Outputs never lose a user's data, and every limit agrees with itself
-// (issue 31): engine/output_file.h, the recorder's cap (devices/recording.h)
-// and the limits compared with a tolerance (engine/units.h).
+// (issue 31): engine/base/output_file.h, the recorder's cap (devices/recording.h)
+// and the limits compared with a tolerance (engine/base/units.h).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -1,4 +1,4 @@
-// The hand's reach (engine/reach.h): planar finger chains within the joint
+// The hand's reach (engine/model/reach.h): planar finger chains within the joint
 // ranges of agents/hand.yaml, and sessions that ask for more.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

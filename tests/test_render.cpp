@@ -303,7 +303,7 @@ TEST(RenderScene, FramedSceneFitsTheTool) {
   }
 }
 
-// The guides (engine/guides.h) appear where they must: the advantage map's
+// The guides (guides/guides.h) appear where they must: the advantage map's
 // segments in their colours, the symmetry plane tinting the view with its
 // colour.
 TEST(RenderScene, GuidesAppearWhereTheyMust) {

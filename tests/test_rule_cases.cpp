@@ -1,4 +1,4 @@
-// Rule test cases as data (engine/rule_tests.h): the case loader's errors
+// Rule test cases as data (engine/session/rule_tests.h): the case loader's errors
 // (file:line:col, "did you mean"), judging a run against expect and reject
 // (windows, exact counts, the reasons), loading a case's session (a file or
 // in place, a rules override) and running one end to end.

@@ -1,6 +1,6 @@
 // afford.load / afford.compile -> Model; Model.run() -> the inferred
 // functions with their explanations (as `afford run --json`) and the trace
-// (the columns of trace.csv, engine/trace.h) as NumPy arrays.
+// (the columns of trace.csv, engine/session/trace.h) as NumPy arrays.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -29,7 +29,7 @@ class TraceColumns : public Observer {
     contacts.reserve(n);
   }
   void on_frame(const Model& m, const State& s, const RuleSet&, const RuleState&) override {
-    // As TraceWriter::on_frame computes them (engine/trace.cpp).
+    // As TraceWriter::on_frame computes them (engine/session/trace.cpp).
     t.push_back(s.t);
     angle.push_back(s.theta);
     effort_force.push_back(s.effort_force);

@@ -119,7 +119,7 @@ class Stepper {
   }
 
   Frame advance(double t) {
-    // A keyframe's actee is on the tool from the first frame at its time (engine/run.cpp).
+    // A keyframe's actee is on the tool from the first frame at its time (engine/session/run.cpp).
     const auto& changes = session_->actee_changes;
     for (; next_change_ < changes.size() && changes[next_change_].t <= t + 1e-9 * model_->timestep; ++next_change_) {
       model_ = &session_->actee_models[changes[next_change_].actee];

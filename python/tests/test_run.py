@@ -35,7 +35,7 @@ def formatted(trace, column, i):
         return f"{v:.6f}"
     if trace[column].dtype == np.bool_ or trace[column].dtype == np.int32:
         return str(int(v))
-    return f"{v:.9g}"  # as trace.csv writes it (engine/trace.h)
+    return f"{v:.9g}"  # as trace.csv writes it (engine/session/trace.h)
 
 
 def test_trace_equals_trace_csv(cli, nutcracker, tmp_path):

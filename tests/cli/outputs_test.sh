@@ -1,7 +1,7 @@
 #!/bin/sh
 # outputs_test.sh AFFORD SOURCE_DIR CASE: nothing a user wrote is
 # overwritten, and every limit agrees with itself (issue 31,
-# engine/output_file.h). Each CASE is one ctest test; every one works in a
+# engine/base/output_file.h). Each CASE is one ctest test; every one works in a
 # fresh folder and checks the exit status, the message and the files left.
 afford=$1
 src=$2

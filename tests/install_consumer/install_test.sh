@@ -29,7 +29,8 @@ expect() {
 }
 
 "$cmake" --install "$build" --prefix "$prefix" >/dev/null
-for f in bin/afford include/afford/engine/model.h include/afford/engine/data_dir.h include/afford/devices/scripted_agent.h \
+for f in bin/afford include/afford/model/model.h include/afford/base/data_dir.h include/afford/guides/guides.h \
+         include/afford/devices/scripted_agent.h \
          include/afford/render/image.h include/afford/gap/diagnose.h include/afford/explore/explore.h \
          include/afford/mjcf/mjcf_scene.h share/afford/rules/functions.yaml \
          share/afford/objects/nutcracker.yaml share/afford/devices/glove.yaml \
@@ -46,7 +47,7 @@ mkdir -p "$checks"
   echo "project(afford_headers LANGUAGES CXX)"
   echo "find_package(afford 0.11 REQUIRED)"
 } >"$checks/CMakeLists.txt"
-for library in engine devices render gap explore mjcf; do
+for library in base load model rules guides session devices render gap explore mjcf; do
   for h in "$prefix/include/afford/$library"/*.h; do
     echo "#include <afford/$library/$(basename "$h")>"
   done >"$checks/$library.cpp"

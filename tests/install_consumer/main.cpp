@@ -4,13 +4,13 @@
 // headers, prints the object's lever and its best mechanical advantage,
 // then runs the session and prints every function inferred and the root
 // element of its MuJoCo scene.
-#include <afford/engine/data_dir.h>
-#include <afford/engine/errors.h>
-#include <afford/engine/lever.h>
-#include <afford/engine/load.h>
-#include <afford/engine/model.h>
-#include <afford/engine/run.h>
-#include <afford/engine/session.h>
+#include <afford/base/data_dir.h>
+#include <afford/base/errors.h>
+#include <afford/load/lever.h>
+#include <afford/load/load.h>
+#include <afford/model/model.h>
+#include <afford/session/run.h>
+#include <afford/session/session.h>
 #include <afford/devices/scripted_agent.h>
 #include <afford/mjcf/mjcf_scene.h>
 

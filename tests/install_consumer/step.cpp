@@ -5,11 +5,11 @@
 // further toward the fixed arm (a negative offset: away from it; a controller
 // of yours would set it). Prints
 // each function as it is inferred and the largest force on the actee.
-#include <afford/engine/data_dir.h>
-#include <afford/engine/errors.h>
-#include <afford/engine/rules.h>
-#include <afford/engine/session.h>
-#include <afford/engine/state.h>
+#include <afford/base/data_dir.h>
+#include <afford/base/errors.h>
+#include <afford/model/state.h>
+#include <afford/rules/rules.h>
+#include <afford/session/session.h>
 #include <afford/devices/scripted_agent.h>
 
 #include <algorithm>

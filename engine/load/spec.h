@@ -108,7 +108,7 @@ struct PlaneSpec {
 // `interaction_space`, written by afford model): how far apart the jaws are
 // fully open (theta_max) at distances along the fixed arm, measured from the
 // fixed jaw's face (y = 0). Without it L_is is the wedge of flat jaw faces
-// through the pivot (engine/derive.h).
+// through the pivot (engine/model/derive.h).
 struct InteractionSpaceSpec {
   std::vector<double> distances;  // m, signed, increasing, within the application region; empty: the wedge
   std::vector<double> gaps;       // m, >= 0, the gap at theta_max at each distance

@@ -1,6 +1,7 @@
 // Agent scripts: YAML keyframes -> ScriptSpec -> Script (see script.h).
 #include "script.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -8,6 +9,7 @@
 #include "did_you_mean.h"
 #include "grasps.h"
 #include "load.h"
+#include "reach.h"
 #include "squeeze.h"
 #include "units.h"
 
@@ -36,7 +38,7 @@ Node key_node(const Node& map, std::string_view key) {
 const MapSchema& squeeze_until_schema() {
   using namespace schema;
   static const MapSchema kUntil{
-      "squeeze until a force, in the lever's static balance (engine/squeeze.h)",
+      "squeeze until a force, in the lever's static balance (engine/model/squeeze.h)",
       {required_key("until", choice({"actee_force", "effort"}), "the force: the actee's, or the hand's effort"),
        required_key("value", quantity(dim::force), "the force reached, above 0")}};
   return kUntil;
@@ -485,6 +487,47 @@ Script compile_script(const ScriptSpec& spec, const Model& first, std::span<cons
     script.keyframes.push_back(current);
   }
   return script;
+}
+
+namespace {
+
+// The named child of a mapping, if it has one.
+std::optional<Node> child_of(const Node& map, const char* key) {
+  if (!map.is_map()) return std::nullopt;
+  for (auto it = map.yaml().begin(); it != map.yaml().end(); ++it) {
+    if (it->first.Scalar() == key) return map.child(it->second);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void check_script_reach(const Node& script_node, const Script& script, const Model& m) {
+  if (!m.has_agent || !m.has_reach) return;
+  const double arm_lo = std::min(m.theta_min, m.theta_max), arm_hi = std::max(m.theta_min, m.theta_max);
+  size_t hand_from = 0;  // the keyframe that last gave the hand's pose
+  for (size_t i = 0; i < script.keyframes.size() && i < script_node.size(); ++i) {
+    const Keyframe& k = script.keyframes[i];
+    const Node key = script_node[i];
+    if (child_of(key, "hand")) hand_from = i;
+    for (int f = 0; f < kFingers; ++f) {
+      Eigen::Vector3d tip = k.fingertip[static_cast<size_t>(f)];
+      if (f == 0 && k.grip) tip = grip_thumb(k, std::clamp(k.thumb_angle, arm_lo, arm_hi));
+      const double short_by = reach_short(m, f, tip);
+      if (short_by <= 0) continue;
+      const Node hand = *child_of(script_node[hand_from], "hand");
+      const std::optional<Node> position = child_of(hand, "position");
+      const SourceLoc at = position ? position->loc() : hand.loc();
+      const size_t fu = static_cast<size_t>(f);
+      fail(at,
+           "a hand within reach of where the script puts the fingertips (" + m.agent_file + ": the " +
+               kFingerNames[fu] + "'s tip reaches " + format_quantity(m.reach_min[fu], dim::length) + " to " +
+               format_quantity(m.reach_max[fu], dim::length) + " from the wrist)",
+           "the " + std::string(kFingerNames[fu]) + "'s tip " + format_quantity(tip.norm(), dim::length) +
+               " from the wrist at " + format_quantity(k.t, dim::time) + " (keyframe at line " +
+               std::to_string(key.loc().line) + "): " + format_quantity(short_by, dim::length) + " out of its reach");
+    }
+  }
 }
 
 }  // namespace afford

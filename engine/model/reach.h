@@ -11,7 +11,7 @@
 //    are not in Fig. 8): the tip's distance from the base then depends only
 //    on the proximal and distal angles, and takes every value between
 //    chain_min and chain_max (a continuous function on a connected range);
-//  - the wrist is free (the hand frame's origin, engine/script.h; its joint
+//  - the wrist is free (the hand frame's origin, engine/session/script.h; its joint
 //    is not in Fig. 8 either): the palm may turn about it, so a tip is within
 //    reach when its distance from the wrist lies between reach_min and
 //    reach_max, a spherical shell about the wrist.
@@ -25,9 +25,7 @@
 
 namespace afford {
 
-class Node;
 struct Model;
-struct Script;
 
 // The nearest and farthest distance (m) of a planar chain's tip from its
 // base, over the joint ranges (rad). link, lo and hi are in the agent
@@ -64,14 +62,5 @@ struct FingerChain {
   double short_by = 0;                                // m
 };
 FingerChain finger_chain(const Model& m, int finger, const Eigen::Vector3d& tip);
-
-// Load-time check of a compiled script (session.cpp): every keyframe's
-// fingertips within the fingers' reach of its hand pose; a grip's thumb
-// taken where the arm can follow it (its angle within the arm's limits:
-// squeezing past them is the hand impedance's force, not a place).
-// Throws DataError at the keyframe's hand position (script_node: the
-// session's `script:` sequence) with the finger and the distance short.
-// Does nothing when the model has no reach.
-void check_script_reach(const Node& script_node, const Script& script, const Model& m);
 
 }  // namespace afford

@@ -5,12 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <optional>
 
 #include "model.h"
-#include "script.h"
-#include "units.h"
-#include "yaml_reader.h"
 
 namespace afford {
 namespace {
@@ -66,15 +62,6 @@ Eigen::Vector3d palmward_across(const Eigen::Vector3d& u) {
   Eigen::Vector3d w = -Eigen::Vector3d::UnitZ() + u.z() * u;  // -z minus its part along u
   if (w.norm() < 1e-9) w = Eigen::Vector3d::UnitX() - u.x() * u;
   return w.normalized();
-}
-
-// The named child of a mapping, if it has one.
-std::optional<Node> child_of(const Node& map, const char* key) {
-  if (!map.is_map()) return std::nullopt;
-  for (auto it = map.yaml().begin(); it != map.yaml().end(); ++it) {
-    if (it->first.Scalar() == key) return map.child(it->second);
-  }
-  return std::nullopt;
 }
 
 }  // namespace
@@ -177,34 +164,6 @@ FingerChain finger_chain(const Model& m, int finger, const Eigen::Vector3d& tip)
   c.angle[kProximal] = q2;
   c.angle[kMetacarpal] = std::acos(std::clamp(ex.x(), -1.0, 1.0));
   return c;
-}
-
-void check_script_reach(const Node& script_node, const Script& script, const Model& m) {
-  if (!m.has_agent || !m.has_reach) return;
-  const double arm_lo = std::min(m.theta_min, m.theta_max), arm_hi = std::max(m.theta_min, m.theta_max);
-  size_t hand_from = 0;  // the keyframe that last gave the hand's pose
-  for (size_t i = 0; i < script.keyframes.size() && i < script_node.size(); ++i) {
-    const Keyframe& k = script.keyframes[i];
-    const Node key = script_node[i];
-    if (child_of(key, "hand")) hand_from = i;
-    for (int f = 0; f < kFingers; ++f) {
-      Eigen::Vector3d tip = k.fingertip[static_cast<size_t>(f)];
-      if (f == 0 && k.grip) tip = grip_thumb(k, std::clamp(k.thumb_angle, arm_lo, arm_hi));
-      const double short_by = reach_short(m, f, tip);
-      if (short_by <= 0) continue;
-      const Node hand = *child_of(script_node[hand_from], "hand");
-      const std::optional<Node> position = child_of(hand, "position");
-      const SourceLoc at = position ? position->loc() : hand.loc();
-      const size_t fu = static_cast<size_t>(f);
-      fail(at,
-           "a hand within reach of where the script puts the fingertips (" + m.agent_file + ": the " +
-               kFingerNames[fu] + "'s tip reaches " + format_quantity(m.reach_min[fu], dim::length) + " to " +
-               format_quantity(m.reach_max[fu], dim::length) + " from the wrist)",
-           "the " + std::string(kFingerNames[fu]) + "'s tip " + format_quantity(tip.norm(), dim::length) +
-               " from the wrist at " + format_quantity(k.t, dim::time) + " (keyframe at line " +
-               std::to_string(key.loc().line) + "): " + format_quantity(short_by, dim::length) + " out of its reach");
-    }
-  }
 }
 
 }  // namespace afford

@@ -25,7 +25,7 @@
 //     target: [x, y, z]            the point looked at
 //     up: [0, 0, 1]                optional, default +z
 //     fov: 40 deg                  optional, vertical field of view, default 40 deg
-//   script:                        the agent's keyframes (engine/script.h)
+//   script:                        the agent's keyframes (engine/session/script.h)
 //     - {t: 0 s, hand: ..., grip: ..., posture: ...}
 //
 // Paths are relative to the session file's folder. Every mistake is a

@@ -188,6 +188,15 @@ struct Script {
   double duration() const { return keyframes.empty() ? 0.0 : keyframes.back().t; }  // s
 };
 
+// Load-time check of a compiled script (session.cpp; reach.h): every keyframe's
+// fingertips within the fingers' reach of its hand pose; a grip's thumb
+// taken where the arm can follow it (its angle within the arm's limits:
+// squeezing past them is the hand impedance's force, not a place).
+// Throws DataError at the keyframe's hand position (script_node: the
+// session's `script:` sequence) with the finger and the distance short.
+// Does nothing when the model has no reach.
+void check_script_reach(const Node& script_node, const Script& script, const Model& m);
+
 // Resolves grips against the model (which must have its agent) and
 // posture names against the model's grasp taxonomy. Throws DataError: a
 // grip distance off its arm, an unknown posture name (with "did you
