@@ -51,6 +51,7 @@ class EventPrinter : public Observer {
 struct LiveOptions {
   std::string file, device_file, record, out_dir;
   double duration = std::numeric_limits<double>::infinity(), wait = 0, silence = 2;
+  bool force = false;  // replace existing output files afford did not write (output_file.h)
 };
 
 int live(const LiveOptions& o) {
@@ -77,7 +78,7 @@ int live(const LiveOptions& o) {
   const std::filesystem::path dir = output_dir(out_dir, session.name);
   std::vector<std::string> inputs = session.files;
   inputs.push_back(device_file);
-  const OutputScope scope({.writer = "live", .force = false, .inputs = inputs});  // engine/base/output_file.h
+  const OutputScope scope({.writer = "live", .force = o.force, .inputs = inputs});  // engine/base/output_file.h
   SessionOutputs outputs(dir);
   if (record.empty()) record = (dir / "live.afrec").string();
   std::optional<Recorder> recorder;
@@ -162,6 +163,7 @@ void add_live(CLI::App& app, Run* run) {
   cmd->add_option("--record", o->record, "the recording (default DIR/live.afrec)")->type_name(kFile);
   cmd->add_option("--out", o->out_dir, "the folder of timeline.jsonl and trace.csv (default out/<session>)")
       ->type_name(kDir);
+  cmd->add_flag("--force", o->force, "replace existing output files that afford did not write");
   cmd->callback([run, o] { *run = [o] { return live(*o); }; });
 }
 

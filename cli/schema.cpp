@@ -11,6 +11,7 @@
 #include "grasps.h"
 #include "guides.h"
 #include "json_schema.h"
+#include "output_file.h"
 #include "load.h"
 #include "measurement.h"
 #include "rule_tests.h"
@@ -40,12 +41,14 @@ void write_schema(const SchemaKind& k, const std::string& dir) {
 struct SchemaOptions {
   std::string kind, out;
   bool all = false;
+  bool force = false;  // replace an existing file afford did not write (output_file.h)
 };
 
 int schema(const SchemaOptions& o) {
   const std::string& which = o.kind;
   const std::string& out = o.out;
   if (which.empty() && !o.all) return usage_error("schema needs a KIND or --all");
+  const OutputScope scope({.writer = "schema", .force = o.force, .inputs = {}});
   if (!out.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(out, ec);
@@ -82,6 +85,7 @@ void add_schema(CLI::App& app, Run* run) {
   CLI::Option* kind = cmd->add_option("KIND", o->kind, "the kind of file: " + kinds)->type_name("KIND");
   cmd->add_flag("--all", o->all, "every kind, one KIND.schema.json each (needs --out)")->excludes(kind);
   cmd->add_option("--out", o->out, "write KIND.schema.json into DIR instead of printing it")->type_name(kDir);
+  cmd->add_flag("--force", o->force, "replace an existing file that afford did not write");
   cmd->callback([run, o] { *run = [o] { return schema(*o); }; });
 }
 

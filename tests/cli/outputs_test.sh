@@ -68,6 +68,17 @@ case $case in
     expect 0 "^recorded 4000 frames to" "$afford" run $session --out "$work/o" --record "$work/notes.afrec" --force
     expect 0 "4000 frames, ended cleanly" "$afford" replay "$work/notes.afrec"
     ;;
+  schema_force)
+    # Every command that writes files takes --force, as the refusal says.
+    mkdir "$work/s"
+    echo "my schema" > "$work/s/object.schema.json"
+    expect 1 "object.schema.json: exists and afford did not write it; choose another name, or --force to replace it" \
+      "$afford" schema object --out "$work/s"
+    [ "$(cat "$work/s/object.schema.json")" = "my schema" ] || fail "the foreign file was replaced"
+    "$afford" schema object --out "$work/s" --force || fail "schema --force failed"
+    grep -q '"title": "afford object file"' "$work/s/object.schema.json" || fail "--force wrote no schema"
+    "$afford" live --help | grep -q -- "--force" || fail "afford live has no --force"
+    ;;
   mp4)
     # ffmpeg's MP4 is an output like the others: a foreign one is refused
     # before any frame is drawn; afford's own is replaced, no temporary left.
