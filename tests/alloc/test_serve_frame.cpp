@@ -3,37 +3,22 @@
 // crash: the page's commands, the step, the rules, the timeline, trace and
 // recording, the state for the pages and the events with their
 // explanations (whose text the sender thread writes). Counted per thread
-// by a replaced operator new (its own test program, so that the
-// replacement touches no other test); the other threads allocate freely.
+// by the replaced operator new of bench/alloc_counter.cpp (its own test
+// program, so that the replacement touches no other test); the other
+// threads allocate freely.
 #include <civetweb.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <mutex>
-#include <new>
 #include <string>
 #include <thread>
 
+#include "alloc_counter.h"
 #include "server.h"
-
-namespace {
-thread_local long t_allocations = 0;  // operator new calls on this thread
-}
-
-void* operator new(std::size_t n) {
-  ++t_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace afford::serve {
 namespace {
@@ -49,7 +34,7 @@ class AllocationsPerFrame : public Observer {
  public:
   void on_start(const Model&, const State&, const RuleSet&) override { last_ = -1; }
   void on_frame(const Model&, const State&, const RuleSet&, const RuleState& rs) override {
-    const long now = t_allocations;
+    const long now = thread_allocation_count();
     if (last_ >= 0) {  // the first frame of a trial opens its files
       ++frames;
       if (now != last_) {
@@ -58,7 +43,7 @@ class AllocationsPerFrame : public Observer {
       }
       if (events_begin(rs) != events_end(rs)) ++frames_with_events;
     }
-    last_ = t_allocations;  // after this observer's own arithmetic
+    last_ = thread_allocation_count();  // after this observer's own arithmetic
   }
   std::atomic<long> frames{0}, frames_allocating{0}, allocations{0}, frames_with_events{0};
 
