@@ -23,11 +23,24 @@ constexpr size_t kBlocks = 4;           // blocks cut from a measurement's trace
 constexpr int kLateRounds = 5;           // fits of a delay on the readings the one before leaves
 constexpr double kLateSettled = 5e-4;    // s: a delay that moves less than this holds
 constexpr size_t kMinBlock = 200;       // fitted samples: a block with fewer joins its neighbour
+constexpr double kStencilReach = 3;     // samples: how far before a delayed time its stencil reads
 
 // Samples from..to of a replay: a block of its trace, judged on its own.
+// A block is cut for judging, not the force sensor's memory: a late
+// sensor at the block's first samples reads the effort of the samples
+// before it, so those (as far back as the longest delay searched, and
+// the stencil's reach) come along as its history, never fitted, judged
+// or counted. Cut without them, a late set's prediction held the block's
+// first value for the whole delay: in a stiff actee's contact many times
+// the noise, at every cut.
 Replay slice(const Replay& r, size_t from, size_t to) {
+  size_t first = from;
+  if (from > 0) {
+    const double reach = kLongestDelay + kStencilReach * (r.t[from] - r.t[from - 1]);  // s
+    while (first > 0 && r.t[from] - r.t[first - 1] <= reach) --first;
+  }
   auto cut = [&](const auto& v) {
-    return std::decay_t<decltype(v)>(v.begin() + static_cast<long>(from), v.begin() + static_cast<long>(to));
+    return std::decay_t<decltype(v)>(v.begin() + static_cast<long>(first), v.begin() + static_cast<long>(to));
   };
   Replay h;
   char label[96];
@@ -40,7 +53,8 @@ Replay slice(const Replay& r, size_t from, size_t to) {
   h.resolution = r.resolution;
   h.rig = r.rig;
   h.to_newtons = r.to_newtons;
-  h.break_at = r.break_at == SIZE_MAX ? SIZE_MAX : (r.break_at <= from ? 0 : r.break_at - from);
+  h.break_at = r.break_at == SIZE_MAX ? SIZE_MAX : (r.break_at <= first ? 0 : r.break_at - first);
+  h.history = from - first;
   h.t = cut(r.t);
   h.x = cut(r.x);
   h.rate = cut(r.rate);
@@ -58,6 +72,10 @@ Replay slice(const Replay& r, size_t from, size_t to) {
   h.phase = cut(r.phase);
   h.fitted = cut(r.fitted);
   h.held = cut(r.held);
+  for (size_t s = 0; s < h.history; ++s) {
+    h.fitted[s] = false;
+    h.held[s] = false;
+  }
   return h;
 }
 
@@ -189,11 +207,14 @@ std::vector<HeldOutCurve> held_out_curves(const std::vector<Replay>& replays, co
       const std::vector<double> before = fitter.residual(nominal, i), after = folds[f].residual(fit, i);
       HeldOutCurve& c = curves[i];
       c.file = r.file;
-      c.t = r.t;
-      c.x = r.x;
-      c.phase = r.phase;
+      const auto own = [&](const auto& v) {  // the block's samples, without its history
+        return std::decay_t<decltype(v)>(v.begin() + static_cast<long>(r.history), v.end());
+      };
+      c.t = own(r.t);
+      c.x = own(r.x);
+      c.phase = own(r.phase);
       const double nan = std::numeric_limits<double>::quiet_NaN();
-      for (size_t s = 0; s < r.t.size(); ++s) {
+      for (size_t s = r.history; s < r.t.size(); ++s) {
         const double measured = r.measured[s] * r.to_newtons;
         c.measured.push_back(measured);
         c.nominal.push_back(r.fitted[s] ? measured - before[s] : nan);
@@ -265,6 +286,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // cannot predict are left out for every set alike: the delay from a fit
   // of the latency alone on the whole traces decides how long after.
   const bool latency_asked = m.rig == Rig::lever && asked(EffectKind::sensor_latency);
+  double delay = 0;  // s, the late readings' (0: none left out)
   // The readings left in bias that fit toward no delay, so it is fitted
   // again on what the delay found leaves, until the delay holds.
   if (latency_asked) {
@@ -276,7 +298,6 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     std::vector<EffectKind> late_with = {EffectKind::sensor_latency};
     if (asked(EffectKind::pivot_friction)) late_with.push_back(EffectKind::pivot_friction);
     const std::vector<Replay> as_replayed = whole;
-    double delay = 0;
     for (int round = 0; round < kLateRounds; ++round) {
       const double found = Fitter(model, whole, every, {}).fit(late_with).delay;
       if (round > 0 && std::abs(found - delay) < kLateSettled) break;
@@ -290,8 +311,10 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   const std::vector<Block> blocks = blocks_of(whole);
   std::vector<Replay> replays = sliced(whole, blocks);
   d.noise = noise_of(replays);
-  weigh(replays, d.noise);
-  weigh(whole, d.noise);
+  // Weighed whole, then cut again: a late reading's weight comes from
+  // `delay` before it, which may lie in the block before.
+  weigh(whole, d.noise, delay);
+  replays = sliced(whole, blocks);
   const size_t folds = std::min<size_t>(replays.size(), kFolds);
   std::vector<size_t> all(replays.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = i;
@@ -515,23 +538,46 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       auto cut_of = [&](const Scored& f) { return was * was - rmse_in(f, contact) * rmse_in(f, contact); };  // N^2
       const double cut = cut_of(best.scored);
       const std::vector<double> best_sq = where(best.scored.sq);
-      branches = {best.set};
+      std::vector<const Tried*> good = {&best};
       for (size_t j = 1; j < tried.size(); ++j) {
         if (cut_of(tried[j].scored) >= kNearlyAsFar * cut && paired_t(best_sq, where(tried[j].scored.sq)) < kSeparated) {
-          branches.push_back(tried[j].set);
+          good.push_back(&tried[j]);
         }
       }
-      const bool on_chosen = std::equal(chosen.begin(), chosen.end(), best.set.begin());
-      chosen = best.set;
+      // A set as good as the best that already explains the gap, where the
+      // best does not, ends the search with it: the next step extends the
+      // best's set and judges every extension against the best's error, so
+      // any effect added to the set that explains would seem to earn its
+      // place (a late sensor, at the floor, with a progressive spring added
+      // against an actee's law that had cut more in the contact alone).
+      bool runner_up_explains = false;
+      if (good.size() > 1 && !effects_match(best.scored)) {
+        std::vector<const Tried*> explaining;
+        for (const Tried* t : good) {
+          if (earns(*t) && effects_match(t->scored)) explaining.push_back(t);
+        }
+        if (!explaining.empty()) {
+          good = explaining;
+          runner_up_explains = true;
+        }
+      }
+      const Tried& pick = *good.front();
+      branches.clear();
+      for (const Tried* t : good) branches.push_back(t->set);
+      const bool on_chosen = std::equal(chosen.begin(), chosen.end(), pick.set.begin());
+      chosen = pick.set;
       std::string added = std::string("+ ") + manifest_of(chosen.back()).name;
       if (!on_chosen) added += " (to " + effects_text({chosen.begin(), chosen.end() - 1}) + ")";
-      d.steps.push_back(step_line(added + ":", best.scored));
+      d.steps.push_back(step_line(added + ":", pick.scored));
+      if (runner_up_explains) {
+        d.steps.push_back("  as good as " + effects_text(best.set) + ", which cut more where it acts, and it explains the gap");
+      }
       if (branches.size() > 1) {
         std::string alike;
         for (size_t j = 1; j < branches.size(); ++j) alike += (j > 1 ? " | " : "") + effects_text(branches[j]);
         d.steps.push_back("  as good: " + alike);
       }
-      current_scored = best.scored;
+      current_scored = pick.scored;
       if (effects_match(current_scored)) break;
     }
   }
@@ -679,7 +725,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   std::array<PhaseShare, kPhases> shares{};
   for (int p = 0; p < kPhases; ++p) shares[static_cast<size_t>(p)].phase = static_cast<Phase>(p);
   for (size_t i = 0; i < replays.size(); ++i) {
-    for (size_t s = 0; s < replays[i].t.size(); ++s) {
+    for (size_t s = replays[i].history; s < replays[i].t.size(); ++s) {
       PhaseShare& ps = shares[static_cast<size_t>(replays[i].phase[s])];
       ++ps.samples;
       ps.before += before[i][s] * before[i][s];

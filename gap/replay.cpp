@@ -251,21 +251,33 @@ void release_held(std::vector<Replay>& replays, double friction) {
   }
 }
 
-void weigh(std::vector<Replay>& replays, double noise) {
+void weigh(std::vector<Replay>& replays, double noise, double delay) {
   // Only the weights' ratios matter to fits and weighted RMSEs; a
   // noise-free effort (traces written by formulas) still ranks them.
   const double sensor = std::max(noise * noise, 1e-24);  // N^2
   for (Replay& r : replays) {
-    r.weight.resize(r.t.size());
+    // The angle's noise reaches the prediction through the slope and,
+    // differentiated twice, through the arm's inertia: where the
+    // acceleration keeps a narrow window (a trace's ends, a fast motion)
+    // a heavy arm passes far more of it.
+    std::vector<double> through(r.t.size());  // N^2
     for (size_t i = 0; i < r.t.size(); ++i) {
-      // The angle's noise reaches the prediction through the slope and,
-      // differentiated twice, through the arm's inertia: where the
-      // acceleration keeps a narrow window (a trace's ends, a fast motion)
-      // a heavy arm passes far more of it.
-      const double through = r.slope[i] * r.x_noise * r.to_newtons;                  // N
-      const double through_inertia = r.inertia * r.accel_noise[i] * r.to_newtons;  // N
-      r.weight[i] = sensor / (sensor + through * through + through_inertia * through_inertia);
+      const double slope = r.slope[i] * r.x_noise * r.to_newtons;                  // N
+      const double inertia = r.inertia * r.accel_noise[i] * r.to_newtons;  // N
+      through[i] = slope * slope + inertia * inertia;
     }
+    // A set with the latency predicts the reading at t from the motion at
+    // t - delay, and takes on the angle's noise there: the first readings
+    // after the jaws leave a stiff actee are predicted by its contact,
+    // where the angle's noise passes on many times over. Each weight must
+    // hold for every set compared, late or not: the noisier prediction
+    // sets it.
+    if (delay > 0) {
+      const std::vector<double> late = delayed(r.t, through, delay);
+      for (size_t i = 0; i < through.size(); ++i) through[i] = std::max(through[i], late[i]);
+    }
+    r.weight.resize(r.t.size());
+    for (size_t i = 0; i < r.t.size(); ++i) r.weight[i] = sensor / (sensor + through[i]);
   }
 }
 

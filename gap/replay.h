@@ -60,6 +60,10 @@ struct Replay {
   // the least noise a measurement can have.
   double resolution = 0;
   size_t break_at = SIZE_MAX;    // the sample at which the actee gave way (SIZE_MAX: it did not)
+  // A block of a trace (diagnose.cpp) starts with the samples before it
+  // that a late force sensor still reads there: never fitted, judged or
+  // counted. 0 for a whole trace.
+  size_t history = 0;
   Rig rig = Rig::lever;
   double to_newtons = 1;         // 1 / lever arm (lever) or 1: main signal to N at the effort
 };
@@ -80,8 +84,10 @@ std::vector<Replay> replay_plates(const Model& actee_model, const Measurement& m
 // sensor's noise variance over its whole noise variance, the sensor's
 // (`noise`, N) plus the motion's through the model's slope. Its unit is
 // the effort sensor's: a weighted RMSE of pure noise is `noise` where the
-// motion adds nothing.
-void weigh(std::vector<Replay>& replays, double noise);
+// motion adds nothing. Where a sensor may read `delay` s late, the
+// motion's noise is the larger of the model's at the sample and `delay`
+// before it, where a late set predicts the reading from.
+void weigh(std::vector<Replay>& replays, double noise, double delay = 0);
 
 // A sensor `delay` s late reads at each sample the effort of an earlier
 // one. Where that earlier time lies where the model predicts nothing (at
