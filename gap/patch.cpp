@@ -47,7 +47,7 @@ YAML::Node patched(const std::string& file, const std::vector<EffectFit>& fits, 
 std::string write(const fs::path& path, const YAML::Node& root, const std::string& from) {
   YAML::Emitter out;
   out << root;
-  // Through engine/output_file.h: never over an input or a file afford did not write.
+  // Through engine/base/output_file.h: never over an input or a file afford did not write.
   write_file_checked(path.string(), "# Written by afford gap from " + from +
                                         ": the fitted effects switched on, each parameter its total (the nominal's "
                                         "value plus the fitted change).\n" + out.c_str() + "\n");

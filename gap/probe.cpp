@@ -410,7 +410,7 @@ void write_probed_object(const ProbeResult& p, const std::string& path) {
   }
   YAML::Emitter out;
   out << root;
-  // Through engine/output_file.h: never over an input or a file afford did not write.
+  // Through engine/base/output_file.h: never over an input or a file afford did not write.
   write_file_checked(path, "# Written by afford gap --probe from " + p.object_file +
                                ": lever limits, rest, spring and friction as probed where seen, the file's "
                                "elsewhere.\n" + out.c_str() + "\n");
