@@ -7,8 +7,9 @@
 // and force arrows whose lengths scale with the force.
 //
 // Determinism: identical input gives identical pixels. Mesa's llvmpipe is
-// told to rasterise on one thread (LP_NUM_THREADS=1, set with setenv before
-// the first context unless the environment already sets it).
+// told to rasterise in the calling thread, with no shader cache on disk
+// (LP_NUM_THREADS=0 and MESA_SHADER_CACHE_DISABLE=true, set with setenv
+// before the first context unless the environment already sets them).
 #pragma once
 
 #include <Eigen/Geometry>

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <numbers>
 #include <sstream>
 
@@ -251,6 +252,21 @@ TEST(RenderScene, IdenticalInputGivesIdenticalPixels) {
   const Image seen = a.render(nutcracker().model, *s, moved, small());
   EXPECT_EQ(render::encode_png(seen), render::encode_png(fresh.render(nutcracker().model, *s, moved, small())));
   EXPECT_NE(render::encode_png(seen), render::encode_png(first));
+}
+
+// Mesa rasterises in the calling thread: a thread of its alive at exit once
+// crashed LeakSanitizer's stop-the-world in CI (scene.cpp).
+TEST(RenderScene, RenderingStartsNoThread) {
+  const auto threads = [] {
+    return std::distance(fs::directory_iterator("/proc/self/task"), fs::directory_iterator());
+  };
+  const auto before = threads();
+  {
+    render::Renderer r;
+    render_at(r, 2.0);
+    EXPECT_EQ(threads(), before);
+  }
+  EXPECT_EQ(threads(), before);
 }
 
 TEST(RenderScene, NutcrackerAtRestMatchesItsReference) {
