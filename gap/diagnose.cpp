@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <random>
 
 namespace afford {
@@ -80,29 +81,66 @@ Replay slice(const Replay& r, size_t from, size_t to) {
 }
 
 // Where the traces are cut for cross-validation: each trace into
-// contiguous blocks with about equal numbers of fitted samples (never at
-// its middle in time: an actee that breaks early leaves its first half
-// all but unfitted), kBlocks in all about, a block of fewer than
-// kMinBlock fitted samples joined to its neighbour.
+// contiguous blocks that hold about equal shares of what can be judged
+// (never at its middle in time: an actee that breaks early leaves its
+// first half all but unfitted), kBlocks in all about, a block of fewer
+// than kMinBlock fitted samples joined to its neighbour. What can be
+// judged is the fitted samples and, apart, those in the actee's contact,
+// each half of the whole where the jaws touch one: an actee's law is
+// fitted and judged in the contact alone, and where one trace held all
+// of it, as one block, the folds that judged it had none to fit the law
+// on (a light squeeze that touched only one way up).
 struct Block {
   size_t trace = 0, from = 0, to = 0;
 };
 std::vector<Block> blocks_of(const std::vector<Replay>& replays) {
+  auto in_contact = [](const Replay& r, size_t s) { return r.fitted[s] && r.deflection[s] > 0; };
+  double fitted_all = 0, contact_all = 0;
+  for (const Replay& r : replays) {
+    for (size_t s = 0; s < r.t.size(); ++s) {
+      fitted_all += r.fitted[s] ? 1 : 0;
+      contact_all += in_contact(r, s) ? 1 : 0;
+    }
+  }
+  // Each sample's share of what can be judged: all of it adds up to 1.
+  const double halves = contact_all > 0 ? 2 : 1;
+  auto mass = [&](const Replay& r, size_t s) {
+    return ((r.fitted[s] ? 1 / fitted_all : 0.0) + (in_contact(r, s) ? 1 / contact_all : 0.0)) / halves;
+  };
   std::vector<Block> out;
-  const size_t wanted = std::max<size_t>(1, (kBlocks + replays.size() / 2) / replays.size());
   for (size_t i = 0; i < replays.size(); ++i) {
     const Replay& r = replays[i];
-    const auto fitted = static_cast<size_t>(std::count(r.fitted.begin(), r.fitted.end(), true));
-    const size_t blocks = std::clamp<size_t>(fitted / kMinBlock, 1, wanted);
-    size_t from = 0, seen = 0;
-    for (size_t b = 1; b < blocks; ++b) {
-      const size_t until = fitted * b / blocks;  // fitted samples before the cut
-      size_t to = from;
-      while (to < r.t.size() && seen < until) seen += r.fitted[to++] ? 1 : 0;
-      out.push_back({i, from, to});
-      from = to;
+    double own = 0;
+    size_t fitted = 0;
+    for (size_t s = 0; s < r.t.size(); ++s) {
+      own += fitted_all > 0 ? mass(r, s) : 0.0;
+      fitted += r.fitted[s] ? 1 : 0;
     }
-    out.push_back({i, from, r.t.size()});
+    const auto share = static_cast<size_t>(std::lround(static_cast<double>(kBlocks) * own));
+    const size_t blocks = std::clamp<size_t>(share, 1, std::max<size_t>(1, fitted / kMinBlock));
+    // Cut where the running share passes each b / blocks of the trace's;
+    // a block left with fewer than kMinBlock fitted samples joins the next
+    // (the last joins the one before).
+    size_t from = 0, fitted_since = 0;
+    double seen = 0;
+    const size_t first = out.size();
+    for (size_t s = 0, b = 1; s < r.t.size() && b < blocks; ++s) {
+      seen += mass(r, s);
+      fitted_since += r.fitted[s] ? 1 : 0;
+      if (seen < own * static_cast<double>(b) / static_cast<double>(blocks)) continue;
+      ++b;
+      if (fitted_since < kMinBlock) continue;
+      out.push_back({i, from, s + 1});
+      from = s + 1;
+      fitted_since = 0;
+    }
+    size_t rest = 0;
+    for (size_t s = from; s < r.t.size(); ++s) rest += r.fitted[s] ? 1 : 0;
+    if (rest < kMinBlock && out.size() > first) {
+      out.back().to = r.t.size();
+    } else {
+      out.push_back({i, from, r.t.size()});
+    }
   }
   return out;
 }
@@ -318,12 +356,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   const size_t folds = std::min<size_t>(replays.size(), kFolds);
   std::vector<size_t> all(replays.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+  SumsCache sums;  // shared by the fitters of `replays`
   std::vector<Fitter> fold_fitters;
   std::vector<std::vector<size_t>> judged(folds);
   for (size_t f = 0; f < folds; ++f) {
     std::vector<size_t> train;
     for (size_t i : all) (i % folds == f ? judged[f] : train).push_back(i);
-    fold_fitters.emplace_back(model, replays, train, judged[f]);
+    fold_fitters.emplace_back(model, replays, train, judged[f], &sums);
   }
   for (const Replay& r : replays) d.judged_on.push_back(r.file);
   d.folds = folds;
@@ -336,7 +375,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     }
     d.fold_sizes.push_back(fs);
   }
-  const Fitter fitter(model, replays, all, {});
+  const Fitter fitter(model, replays, all, {}, &sums);
   std::vector<Replay> noisier = replay_with_input_noise(model, m, x_noise, blocks);
   for (size_t i = 0; i < noisier.size(); ++i) noisier[i].weight = replays[i].weight;
   const Fitter noisier_fitter(model, noisier, all, {});
@@ -377,13 +416,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // pure noise gives the sensor's noise, however little the samples weigh.
     double rmse_contact = 0;
   };
-  auto score = [&](const std::vector<EffectKind>& set) {
+  auto score_anew = [&](const std::vector<EffectKind>& set) {
     Scored out{fitter.fit(set), {}, 0.0};
     SetFit& f = out.fit;
     double sq = 0, weights = 0;
     size_t n = 0;
     for (size_t k = 0; k < fold_fitters.size(); ++k) {
-      const SetFit g = fold_fitters[k].fit(set);
+      const SetFit g = fold_fitters[k].fit(set, &f);
       f.valid = f.valid && f.writable && g.valid;  // the folds' laws need only be physical
       sq += g.rmse_test * g.rmse_test * g.w_test;
       weights += g.w_test;
@@ -402,6 +441,14 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     for (size_t j = 0; j < out.sq.size(); ++j) sq_contact += judged_in_contact[j] ? out.sq[j] : 0.0;
     out.rmse_contact = contact_samples > 0 ? std::sqrt(sq_contact / static_cast<double>(contact_samples)) : 0.0;
     return out;
+  };
+  // Each set is scored once: the selection below and the search for the
+  // smallest set that explains ask for many of the same.
+  std::map<std::vector<EffectKind>, Scored> scored_sets;
+  auto score = [&](const std::vector<EffectKind>& set) -> const Scored& {
+    auto found = scored_sets.find(set);
+    if (found == scored_sets.end()) found = scored_sets.emplace(set, score_anew(set)).first;
+    return found->second;
   };
 
   const Scored nominal_scored = score({});
@@ -581,6 +628,79 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       if (effects_match(current_scored)) break;
     }
   }
+  // Forward selection adds one effect at a time, each for what it cuts
+  // alone: where two effects together explain the gap and neither alone
+  // cuts much (a weight and a damping on closing-only strokes, each alone
+  // all but a constant torque), or a first choice stands in for two (a
+  // preload for an inertia and a progressive spring), it ends short of
+  // explaining. Then the smallest set that explains is looked for among
+  // every single effect and pair, each of its effects earning its place
+  // against the set without it; sets of that size as good as the best
+  // are its look-alikes.
+  if (!nominal_matched && !effects_match(current_scored)) {
+    std::vector<std::vector<EffectKind>> sets;
+    for (size_t a = 0; a < library.size(); ++a) {
+      sets.push_back({library[a]});
+      for (size_t b = a + 1; b < library.size(); ++b) sets.push_back({library[a], library[b]});
+    }
+    // Judged where an effect acts: an actee's law in the contact.
+    auto in_contact = [&](EffectKind k) { return contact_samples > 0 && manifest_of(k).home == EffectHome::actee; };
+    auto each_earns = [&](const std::vector<EffectKind>& set) {
+      const Scored& with = score(set);
+      for (EffectKind k : set) {
+        std::vector<EffectKind> without = set;
+        std::erase(without, k);
+        const Scored& less = score(without);
+        const bool contact = in_contact(k);
+        const double was = contact ? less.rmse_contact : less.fit.rmse_test;
+        const double now = contact ? with.rmse_contact : with.fit.rmse_test;
+        if (!(was > 0 && 1 - now / was >= kRealMargin && with.fit.aicc <= less.fit.aicc - kAiccMargin)) return false;
+      }
+      return true;
+    };
+    for (size_t size = 1; size <= 2; ++size) {
+      std::vector<const std::vector<EffectKind>*> explaining;
+      for (const std::vector<EffectKind>& set : sets) {
+        if (set.size() != size) continue;
+        // A set that misses the floor on every sample it is fitted to
+        // misses it held out: only those that may explain are scored on
+        // the folds (a sixth of the fits for the others).
+        if (!scored_sets.contains(set)) {
+          const SetFit in_sample = fitter.fit(set);
+          if (!in_sample.valid || in_sample.rmse_train > kMatched * floor_of(in_sample)) continue;
+        }
+        const Scored& f = score(set);
+        if (f.fit.valid && effects_match(f) && each_earns(set)) explaining.push_back(&set);
+      }
+      if (explaining.empty()) continue;
+      auto error_of = [&](const std::vector<EffectKind>* set) {
+        const Scored& f = score(*set);
+        return std::max(f.fit.rmse_test, f.rmse_contact);
+      };
+      std::stable_sort(explaining.begin(), explaining.end(),
+                       [&](const auto* a, const auto* b) { return error_of(a) < error_of(b); });
+      const Scored& best = score(*explaining.front());
+      const double was = nominal.rmse_test * nominal.rmse_test;
+      const double cut = was - best.fit.rmse_test * best.fit.rmse_test;
+      branches = {*explaining.front()};
+      for (size_t j = 1; j < explaining.size(); ++j) {
+        const Scored& other = score(*explaining[j]);
+        if (was - other.fit.rmse_test * other.fit.rmse_test >= kNearlyAsFar * cut &&
+            paired_t(best.sq, other.sq) < kSeparated) {
+          branches.push_back(*explaining[j]);
+        }
+      }
+      chosen = branches.front();
+      current_scored = best;
+      d.steps.push_back(step_line("smallest set that explains, " + effects_text(chosen) + ":", best));
+      if (branches.size() > 1) {
+        std::string alike;
+        for (size_t j = 1; j < branches.size(); ++j) alike += (j > 1 ? " | " : "") + effects_text(branches[j]);
+        d.steps.push_back("  as good: " + alike);
+      }
+      break;
+    }
+  }
   if (branches.size() > 1) {
     ambiguous = true;
     d.ambiguous = branches;
@@ -593,12 +713,22 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   if (!chosen.empty()) {
     d.look_alikes = look_alikes(fitter, chosen, applicable);
     if (!d.look_alikes.empty() && d.ambiguous.empty()) d.ambiguous.push_back(chosen);
+    // Where one effect has one look-alike, the two at once fit as well as
+    // either (their columns all but parallel): the data cannot tell a
+    // weight from a preload one way up, nor from both.
+    const bool both_too = d.look_alikes.size() == 1 && chosen.size() < static_cast<size_t>(kMaxEffects);
     for (const LookAlike& l : d.look_alikes) {
       std::vector<EffectKind> set = chosen;
       std::replace(set.begin(), set.end(), l.chosen, l.alike);
       if (std::find(d.ambiguous.begin(), d.ambiguous.end(), set) == d.ambiguous.end()) d.ambiguous.push_back(set);
-      std::snprintf(line, sizeof line, "  the data cannot tell %s from %s (their columns' cosine %.4f): ",
-                    manifest_of(l.chosen).name, manifest_of(l.alike).name, l.cosine);
+      if (both_too) {
+        std::vector<EffectKind> with = chosen;
+        with.push_back(l.alike);
+        d.ambiguous.push_back(with);
+      }
+      std::snprintf(line, sizeof line, "  the data cannot tell %s from %s%s (their columns' cosine %.4f): ",
+                    manifest_of(l.chosen).name, manifest_of(l.alike).name, both_too ? ", nor from both" : "",
+                    l.cosine);
       d.steps.push_back(line + l.separate);
       ambiguous = true;
     }

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
+#include <tuple>
 
 #include "terms.h"
 
@@ -13,18 +15,27 @@ namespace {
 
 constexpr double kMinExponent = 0.5, kMaxExponent = 4.0;  // the actee's power laws searched
 constexpr int kMaxRounds = 5;   // of the alternating search for a delay and an exponent together
+// After its first round, each is searched this far either side of where it was, on a grid of kNearSteps.
+constexpr double kDelayReach = 0.01;     // s
+constexpr double kExponentReach = 0.25;
+constexpr int kNearSteps = 6;
+// A round that moves them less than this ends the search: a hundredth of a
+// sample at 1 kHz, and far below what the data tells of an exponent.
+constexpr double kDelaySettled = 1e-5;   // s
+constexpr double kExponentSettled = 1e-3;
 
 bool is_linear(EffectKind k) { return k != EffectKind::sensor_latency && k != EffectKind::actee_compliance; }
 
 // The minimum of f on [lo, hi]: a grid of `steps`, then golden sections
-// around the best point. Deterministic.
+// around the best point. Deterministic. f(x, on_grid): on_grid is true
+// for the grid's points, the same in every search over [lo, hi].
 template <typename F>
 double minimise(F f, double lo, double hi, int steps) {
   double best = lo, best_f = std::numeric_limits<double>::max();
   const double h = (hi - lo) / steps;
   for (int i = 0; i <= steps; ++i) {
     const double x = lo + h * i;
-    const double v = f(x);
+    const double v = f(x, true);
     if (v < best_f) {
       best_f = v;
       best = x;
@@ -33,24 +44,24 @@ double minimise(F f, double lo, double hi, int steps) {
   double a = std::max(lo, best - h), b = std::min(hi, best + h);
   const double g = 0.5 * (std::sqrt(5.0) - 1);
   double c = b - g * (b - a), d = a + g * (b - a);
-  double fc = f(c), fd = f(d);
-  for (int i = 0; i < 40 && b - a > 1e-9 * (1 + std::abs(best)); ++i) {
+  double fc = f(c, false), fd = f(d, false);
+  for (int i = 0; i < 40 && b - a > 1e-6 * (1 + std::abs(best)); ++i) {
     if (fc < fd) {
       b = d;
       d = c;
       fd = fc;
       c = b - g * (b - a);
-      fc = f(c);
+      fc = f(c, false);
     } else {
       a = c;
       c = d;
       fc = fd;
       d = a + g * (b - a);
-      fd = f(d);
+      fd = f(d, false);
     }
   }
   const double x = 0.5 * (a + b);
-  return f(x) <= best_f ? x : best;
+  return f(x, false) <= best_f ? x : best;
 }
 
 // The effect's current value in the nominal model (what a fitted change adds to).
@@ -75,8 +86,8 @@ double aicc(double rss, size_t n, int k) {
 }
 
 Fitter::Fitter(const Model& model, const std::vector<Replay>& replays, std::vector<size_t> train,
-               std::vector<size_t> test)
-    : model_(model), replays_(replays), train_(std::move(train)), test_(std::move(test)) {
+               std::vector<size_t> test, SumsCache* cache)
+    : model_(model), replays_(replays), cache_(cache), train_(std::move(train)), test_(std::move(test)) {
   if (model.has_actee) actee_ = actee_geometry(model, replays.empty() ? Rig::lever : replays.front().rig);
   const double ds = std::abs(model.spring_position);
   for (const Replay& r : replays_) {
@@ -185,8 +196,55 @@ void Fitter::columns(size_t i, const std::vector<EffectKind>& linear, const Nonl
   }
 }
 
+// What the cache keeps: a replay's sums, or its share of the power law's row.
+struct SumsKey {
+  size_t replay = 0;
+  std::vector<EffectKind> linear;
+  double delay = 0, exponent = 0;
+  int what = 0;  // 0: the linear columns' sums, 1: with the power law's column, 2: the power law's row
+  bool operator<(const SumsKey& o) const {
+    return std::tie(replay, linear, delay, exponent, what) < std::tie(o.replay, o.linear, o.delay, o.exponent, o.what);
+  }
+};
+
+struct SumsCache::Entries {
+  std::map<SumsKey, Fitter::Sums> sums;
+};
+SumsCache::SumsCache() : entries_(std::make_unique<Entries>()) {}
+SumsCache::~SumsCache() = default;
+
 Fitter::Sums Fitter::accumulate(const std::vector<size_t>& on, const std::vector<EffectKind>& linear,
-                                const Nonlinear& nl, bool power_law_column) const {
+                                const Nonlinear& nl, bool power_law_column, bool on_grid) const {
+  const auto k = static_cast<Eigen::Index>(linear.size() + (power_law_column && nl.exponent > 0 ? 1 : 0));
+  Sums out;
+  out.xtx = Eigen::MatrixXd::Zero(k, k);
+  out.xty = Eigen::VectorXd::Zero(k);
+  out.inflation = Eigen::VectorXd::Zero(k);
+  for (size_t i : on) {
+    std::optional<Sums> own;
+    const Sums* sums = nullptr;
+    if (cache_ && on_grid) {
+      const SumsKey key{i, linear, nl.delay, nl.exponent, power_law_column ? 1 : 0};
+      auto found = cache_->entries_->sums.find(key);
+      if (found == cache_->entries_->sums.end()) {
+        found = cache_->entries_->sums.emplace(key, replay_sums(i, linear, nl, power_law_column)).first;
+      }
+      sums = &found->second;
+    } else {
+      sums = &own.emplace(replay_sums(i, linear, nl, power_law_column));
+    }
+    out.xtx += sums->xtx;
+    out.xty += sums->xty;
+    out.inflation += sums->inflation;
+    out.yty += sums->yty;
+    out.weights += sums->weights;
+    out.count += sums->count;
+  }
+  return out;
+}
+
+Fitter::Sums Fitter::replay_sums(size_t i, const std::vector<EffectKind>& linear, const Nonlinear& nl,
+                                 bool power_law_column) const {
   const size_t k = linear.size() + (power_law_column && nl.exponent > 0 ? 1 : 0);
   Sums out;
   out.xtx = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k));
@@ -200,52 +258,48 @@ Fitter::Sums Fitter::accumulate(const std::vector<size_t>& on, const std::vector
   std::vector<double> base;
   std::vector<std::vector<double>> cols;
   std::vector<double> y, wy;  // N, the measured signal less the base at the fitted samples, and times its weight
-  for (size_t i : on) {
-    columns(i, linear, nl, &base, &cols);
-    if (!power_law_column && nl.exponent > 0) cols.pop_back();  // its sums are added by add_power_law
-    const Replay& r = replays_[i];
-    const std::vector<size_t>& fitted = fitted_[i];
-    const std::vector<double>& w = r.weight;
-    for (size_t c = 0; c < linear.size(); ++c) {
-      double& sum = out.inflation[static_cast<Eigen::Index>(c)];
-      for (size_t s : fitted) {
-        const double sd = linear[c] == EffectKind::arm_inertia     ? r.accel_noise[s]
-                          : linear[c] == EffectKind::viscous_damping ? r.rate_noise
-                                                                     : 0.0;
-        sum += w[s] * sd * r.to_newtons * sd * r.to_newtons;
-      }
+  columns(i, linear, nl, &base, &cols);
+  if (!power_law_column && nl.exponent > 0) cols.pop_back();  // its sums are added by add_power_law
+  const Replay& r = replays_[i];
+  const std::vector<size_t>& fitted = fitted_[i];
+  const std::vector<double>& w = r.weight;
+  for (size_t c = 0; c < linear.size(); ++c) {
+    double& sum = out.inflation[static_cast<Eigen::Index>(c)];
+    for (size_t s : fitted) {
+      const double sd = linear[c] == EffectKind::arm_inertia     ? r.accel_noise[s]
+                        : linear[c] == EffectKind::viscous_damping ? r.rate_noise
+                                                                   : 0.0;
+      sum += w[s] * sd * r.to_newtons * sd * r.to_newtons;
     }
-    // The normal equations' sums, each added up sample after sample in the
-    // order of the traces.
-    y.resize(fitted.size());
-    wy.resize(fitted.size());
-    for (size_t j = 0; j < fitted.size(); ++j) {
-      y[j] = r.measured[fitted[j]] * r.to_newtons - base[fitted[j]];
-      wy[j] = w[fitted[j]] * y[j];
-    }
-    for (size_t a = 0; a < k; ++a) {
-      const std::vector<double>& ca = cols[a];
-      for (size_t b = 0; b <= a; ++b) {
-        const std::vector<double>& cb = cols[b];
-        double& sum = out.xtx(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
-        for (size_t s : fitted) sum += w[s] * ca[s] * cb[s];
-      }
-      double& sum = out.xty[static_cast<Eigen::Index>(a)];
-      for (size_t j = 0; j < fitted.size(); ++j) sum += ca[fitted[j]] * wy[j];
-    }
-    for (size_t j = 0; j < fitted.size(); ++j) {
-      out.yty += wy[j] * y[j];
-      out.weights += w[fitted[j]];
-    }
-    out.count += fitted.size();
   }
+  // The normal equations' sums, each added up sample after sample (and
+  // then the replays', in the order asked).
+  y.resize(fitted.size());
+  wy.resize(fitted.size());
+  for (size_t j = 0; j < fitted.size(); ++j) {
+    y[j] = r.measured[fitted[j]] * r.to_newtons - base[fitted[j]];
+    wy[j] = w[fitted[j]] * y[j];
+  }
+  for (size_t a = 0; a < k; ++a) {
+    const std::vector<double>& ca = cols[a];
+    for (size_t b = 0; b <= a; ++b) {
+      const std::vector<double>& cb = cols[b];
+      double& sum = out.xtx(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+      for (size_t s : fitted) sum += w[s] * ca[s] * cb[s];
+    }
+    double& sum = out.xty[static_cast<Eigen::Index>(a)];
+    for (size_t j = 0; j < fitted.size(); ++j) sum += ca[fitted[j]] * wy[j];
+  }
+  for (size_t j = 0; j < fitted.size(); ++j) {
+    out.yty += wy[j] * y[j];
+    out.weights += w[fitted[j]];
+  }
+  out.count += fitted.size();
   return out;
 }
 
 Fitter::Sums Fitter::add_power_law(const Sums& linear_sums, const std::vector<size_t>& on,
-                                   const std::vector<EffectKind>& linear, double exponent) const {
-  // The power law's column is zero off the actee: its sums run over the
-  // fitted samples in contact only, which adds up to the same as over all.
+                                   const std::vector<EffectKind>& linear, double exponent, bool on_grid) const {
   const auto k = static_cast<Eigen::Index>(linear.size());
   Sums out = linear_sums;
   out.xtx.conservativeResize(k + 1, k + 1);
@@ -255,26 +309,50 @@ Fitter::Sums Fitter::add_power_law(const Sums& linear_sums, const std::vector<si
   out.xty[k] = 0;
   out.inflation.conservativeResize(k + 1);
   out.inflation[k] = 0;
-  const bool gravity = std::find(linear.begin(), linear.end(), EffectKind::gravity) != linear.end();
   for (size_t i : on) {
-    const Replay& r = replays_[i];
-    const std::vector<double> law = actee_term(model_, r, actee_, exponent, 1.0);
-    const std::vector<double>& own = own_actee_[i];
-    const bool weight = gravity && !arm_weight_[i].empty();
-    for (size_t s : contact_fitted_[i]) {
-      // As columns() makes them: the base without the actee's own law.
-      double base = r.nominal[s];
-      if (weight) base += arm_weight_[i][s];
-      base -= own[s];
-      base *= r.to_newtons;
-      const double y = r.measured[s] * r.to_newtons - base, wy = r.weight[s] * y;
-      const double ca = law[s] * r.to_newtons;
-      for (Eigen::Index b = 0; b < k; ++b) {
-        out.xtx(k, b) += r.weight[s] * ca * (phi_[i][static_cast<size_t>(linear[static_cast<size_t>(b)])][s] * r.to_newtons);
+    std::optional<Sums> own;
+    const Sums* row = nullptr;
+    if (cache_ && on_grid) {
+      const SumsKey key{i, linear, 0.0, exponent, 2};
+      auto found = cache_->entries_->sums.find(key);
+      if (found == cache_->entries_->sums.end()) {
+        found = cache_->entries_->sums.emplace(key, power_law_row(i, linear, exponent)).first;
       }
-      out.xtx(k, k) += r.weight[s] * ca * ca;
-      out.xty[k] += ca * wy;
+      row = &found->second;
+    } else {
+      row = &own.emplace(power_law_row(i, linear, exponent));
     }
+    out.xtx.row(k) += row->xtx.row(0);
+    out.xty[k] += row->xty[0];
+  }
+  return out;
+}
+
+Fitter::Sums Fitter::power_law_row(size_t i, const std::vector<EffectKind>& linear, double exponent) const {
+  // The power law's column is zero off the actee: its sums run over the
+  // fitted samples in contact only, which adds up to the same as over all.
+  const auto k = static_cast<Eigen::Index>(linear.size());
+  Sums out;
+  out.xtx = Eigen::MatrixXd::Zero(1, k + 1);
+  out.xty = Eigen::VectorXd::Zero(1);
+  const bool gravity = std::find(linear.begin(), linear.end(), EffectKind::gravity) != linear.end();
+  const Replay& r = replays_[i];
+  const std::vector<double> law = actee_term(model_, r, actee_, exponent, 1.0);
+  const std::vector<double>& own = own_actee_[i];
+  const bool weight = gravity && !arm_weight_[i].empty();
+  for (size_t s : contact_fitted_[i]) {
+    // As columns() makes them: the base without the actee's own law.
+    double base = r.nominal[s];
+    if (weight) base += arm_weight_[i][s];
+    base -= own[s];
+    base *= r.to_newtons;
+    const double y = r.measured[s] * r.to_newtons - base, wy = r.weight[s] * y;
+    const double ca = law[s] * r.to_newtons;
+    for (Eigen::Index b = 0; b < k; ++b) {
+      out.xtx(0, b) += r.weight[s] * ca * (phi_[i][static_cast<size_t>(linear[static_cast<size_t>(b)])][s] * r.to_newtons);
+    }
+    out.xtx(0, k) += r.weight[s] * ca * ca;
+    out.xty[0] += ca * wy;
   }
   return out;
 }
@@ -343,7 +421,7 @@ double Fitter::rss(const std::vector<size_t>& on, const std::vector<EffectKind>&
   return sum;
 }
 
-SetFit Fitter::fit(const std::vector<EffectKind>& set) const {
+SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const {
   std::vector<EffectKind> linear;
   bool latency = false, compliance = false;
   for (EffectKind k : set) {
@@ -358,28 +436,50 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set) const {
   // The linear columns' sums while the power law's exponent is searched
   // without a delay: they do not change with it.
   std::optional<Sums> linear_sums;
-  auto train_rss = [&](const Nonlinear& nl) {
+  auto train_rss = [&](const Nonlinear& nl, bool on_grid = false) {
     if (nl.exponent > 0 && nl.delay == 0) {
       if (!linear_sums) linear_sums = accumulate(train_, linear, nl, false);
-      return solve(add_power_law(*linear_sums, train_, linear, nl.exponent), &coef, &sigma, &n, &w);
+      return solve(add_power_law(*linear_sums, train_, linear, nl.exponent, on_grid), &coef, &sigma, &n, &w);
     }
-    return solve(accumulate(train_, linear, nl, true), &coef, &sigma, &n, &w);
+    return solve(accumulate(train_, linear, nl, true, on_grid), &coef, &sigma, &n, &w);
   };
   Nonlinear best;
+  // A search's grid is the same in every fit: its points' sums are kept.
   auto best_exponent = [&](double delay) {
-    return minimise([&](double e) { return train_rss(Nonlinear{delay, e}); }, kMinExponent, kMaxExponent, 35);
+    return minimise([&](double e, bool grid) { return train_rss(Nonlinear{delay, e}, grid && delay == 0); },
+                    kMinExponent, kMaxExponent, 35);
   };
   auto best_delay = [&](double exponent) {
-    return minimise([&](double d) { return train_rss(Nonlinear{d, exponent}); }, 0.0, kLongestDelay, 50);
+    return minimise([&](double d, bool grid) { return train_rss(Nonlinear{d, exponent}, grid && exponent == 0); },
+                    0.0, kLongestDelay, 50);
   };
-  if (compliance) best.exponent = best_exponent(0.0);
   // Both at once: one, then the other, until neither moves (they trade
   // off: a later effort reads like a stiffer actee while it is loaded).
-  for (int round = 0; round < (latency && compliance ? kMaxRounds : 1); ++round) {
+  // After a first search over each whole range, each is searched again
+  // about where it was (a window it may move across from round to round);
+  // started from `near`'s values, only about them.
+  auto about = [&](double x, double lo, double hi, double reach, auto f) {
+    return minimise([&](double v, bool) { return f(v); }, std::max(lo, x - reach), std::min(hi, x + reach), kNearSteps);
+  };
+  const bool both = latency && compliance;
+  const bool started = both && near != nullptr;
+  if (started) {
+    best = Nonlinear{near->delay, near->exponent};
+  } else if (compliance) {
+    best.exponent = best_exponent(0.0);
+  }
+  for (int round = 0; round < (both ? kMaxRounds : 1); ++round) {
     const Nonlinear was = best;
-    if (latency) best.delay = best_delay(best.exponent);
-    if (compliance && latency) best.exponent = best_exponent(best.delay);
-    if (std::abs(best.delay - was.delay) < 1e-6 && std::abs(best.exponent - was.exponent) < 1e-4) break;
+    if (round == 0 && !started) {
+      if (latency) best.delay = best_delay(best.exponent);
+      if (both) best.exponent = best_exponent(best.delay);
+    } else {
+      best.delay = about(best.delay, 0.0, kLongestDelay, kDelayReach,
+                         [&](double d) { return train_rss(Nonlinear{d, best.exponent}); });
+      best.exponent = about(best.exponent, kMinExponent, kMaxExponent, kExponentReach,
+                            [&](double e) { return train_rss(Nonlinear{best.delay, e}); });
+    }
+    if (std::abs(best.delay - was.delay) < kDelaySettled && std::abs(best.exponent - was.exponent) < kExponentSettled) break;
   }
   const double rss_train = train_rss(best);
   const std::vector<double> best_coef = coef, best_sigma = sigma;
@@ -476,12 +576,12 @@ double Fitter::own_zero(size_t i, double exponent) const {
   double most = 0;  // m, the largest deflection fitted
   for (size_t s : fitted_[i]) most = std::max(most, replays_[i].deflection[s]);
   double f = 0, w = 0;
-  return minimise([&](double z) { return scaled_actee_rss(i, exponent, &f, &w, nullptr, z); }, 0.0, most / 2, 30);
+  return minimise([&](double z, bool) { return scaled_actee_rss(i, exponent, &f, &w, nullptr, z); }, 0.0, most / 2, 30);
 }
 
 double Fitter::shared_exponent(const std::vector<size_t>& on, bool own_zeros) const {
   return minimise(
-      [&](double e) {
+      [&](double e, bool) {
         double sum = 0, f = 0, w = 0;
         for (size_t i : on) sum += scaled_actee_rss(i, e, &f, &w, nullptr, own_zeros ? own_zero(i, e) : 0.0);
         return sum;

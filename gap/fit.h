@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -44,14 +45,37 @@ struct SetFit {
   double exponent = 0;             // 0: the actee's own law
 };
 
+// Each replay's sums of the normal equations at the delays and exponents
+// of a search's grid, kept for the Fitters of one set of replays (the
+// folds and the whole): each fold's grid search tries the same delays and
+// exponents on the same replays, and a replay's sums do not depend on the
+// others fitted with it. Only for Fitters of the same model and replays.
+class SumsCache {
+ public:
+  SumsCache();
+  ~SumsCache();
+  SumsCache(const SumsCache&) = delete;
+  SumsCache& operator=(const SumsCache&) = delete;
+
+ private:
+  friend class Fitter;
+  struct Entries;
+  std::unique_ptr<Entries> entries_;
+};
+
 class Fitter {
  public:
   // `train` and `test` index the replays; the model is the nominal one.
-  Fitter(const Model& model, const std::vector<Replay>& replays, std::vector<size_t> train, std::vector<size_t> test);
+  // Fitters given one cache must share the model and the replays.
+  Fitter(const Model& model, const std::vector<Replay>& replays, std::vector<size_t> train, std::vector<size_t> test,
+         SumsCache* cache = nullptr);
 
   // The least-squares fit of a set of effects on the training traces, scored
-  // on the test traces. The empty set is the nominal model.
-  SetFit fit(const std::vector<EffectKind>& set) const;
+  // on the test traces. The empty set is the nominal model. With `near`,
+  // a fit of the same set on other traces of one measurement (a fold's,
+  // given the whole's), a delay and an actee's exponent searched together
+  // are searched about its values only.
+  SetFit fit(const std::vector<EffectKind>& set, const SetFit* near = nullptr) const;
 
   // The residual (measured - predicted, N) of every sample of replay i
   // under a fit; samples outside the fit (at a limit, after a break) are 0.
@@ -85,6 +109,7 @@ class Fitter {
   double shared_exponent(const std::vector<size_t>& on, bool own_zeros = false) const;
 
  private:
+  friend class SumsCache;
   struct Nonlinear {
     double delay = 0;      // s
     double exponent = 0;   // 0: the model's own actee law
@@ -103,13 +128,19 @@ class Fitter {
   };
   // For fixed nonlinear parameters; the power law's column last when
   // `power_law_column` and an exponent is given (else only the base
-  // without the actee's own law).
+  // without the actee's own law). `on_grid`: the parameters are a grid
+  // point of a search, whose sums the cache keeps.
   Sums accumulate(const std::vector<size_t>& on, const std::vector<EffectKind>& linear, const Nonlinear& nl,
-                  bool power_law_column) const;
+                  bool power_law_column, bool on_grid = false) const;
+  // Replay i's share of them.
+  Sums replay_sums(size_t i, const std::vector<EffectKind>& linear, const Nonlinear& nl, bool power_law_column) const;
   // The same with the power law's column added to sums made without it
   // (no delay): only the samples in contact count.
   Sums add_power_law(const Sums& linear_sums, const std::vector<size_t>& on, const std::vector<EffectKind>& linear,
-                     double exponent) const;
+                     double exponent, bool on_grid = false) const;
+  // Replay i's share of the power law's row (xtx's last row, xty's last
+  // entry; the rest zero).
+  Sums power_law_row(size_t i, const std::vector<EffectKind>& linear, double exponent) const;
   // Weighted linear least squares from the sums: the weighted RSS, with
   // the coefficients and their standard errors.
   double solve(const Sums& sums, std::vector<double>* coef, std::vector<double>* sigma, size_t* n,
@@ -121,6 +152,7 @@ class Fitter {
 
   const Model& model_;
   const std::vector<Replay>& replays_;
+  SumsCache* cache_ = nullptr;
   std::vector<size_t> train_, test_;
   std::vector<std::array<std::vector<double>, kEffectKinds>> phi_;  // per replay: linear regressors
   std::vector<std::vector<double>> arm_weight_;  // per replay: the arm's weight torque, if gravity is off

@@ -198,22 +198,37 @@ std::vector<double> delayed(const std::vector<double>& t, const std::vector<doub
 }
 
 std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay) {
-  std::vector<double> out = delayed(t, y, delay);
-  if (delay == 0) return out;
+  if (delay == 0) return y;
+  // One walk: where the stencil does not apply, delayed()'s value, as it
+  // would give it (held before a stretch's start and after the end, else
+  // linear between the samples either side).
   const size_t n = t.size();
+  std::vector<double> out(n);
   const double step = (t.back() - t.front()) / static_cast<double>(std::max<size_t>(1, n - 1));  // s
-  auto even = [&](size_t a) { return std::abs(t[a + 1] - t[a] - step) <= 0.01 * step; };
-  size_t j = 1;      // the first sample later than the time asked for
-  size_t start = 0;  // the first sample of the stretch sample i is in (delayed() holds before it)
+  const double gap = kGapSteps * (t.back() - t.front()) / static_cast<double>(std::max<size_t>(1, n - 1));
+  // even[a]: the step from sample a to a + 1 is the mean step (within 1 %).
+  std::vector<unsigned char> even(n, 0);
+  for (size_t a = 0; a + 1 < n; ++a) even[a] = std::abs(t[a + 1] - t[a] - step) <= 0.01 * step;
+  size_t j = 1;             // the first sample later than the time asked for
+  size_t start_held = 0;    // delayed()'s stretch: it holds the first value before it
+  size_t start_even = 0;    // the stencil's: evenly spaced from here on (never before start_held)
   for (size_t i = 0; i < n; ++i) {
-    if (i > 0 && !even(i - 1) && t[i] - t[i - 1] > step) start = i;
+    if (i > 0 && t[i] - t[i - 1] > gap) start_held = i;
+    if (i > 0 && !even[i - 1] && t[i] - t[i - 1] > step) start_even = i;
     const double at = t[i] - delay;
-    if (at <= t[start] || at >= t.back()) continue;
+    if (at <= t[start_held] || at >= t.back()) {
+      out[i] = at <= t[start_held] ? y[start_held] : y.back();
+      continue;
+    }
+    j = std::max(j, start_held + 1);
     while (t[j] <= at) ++j;
-    // Samples j-2 .. j+1 around the interval, in the stretch and evenly
-    // spaced, else the linear value stays.
-    if (j < start + 2 || j + 1 >= n || !even(j - 2) || !even(j - 1) || !even(j)) continue;
     const double f = (at - t[j - 1]) / (t[j] - t[j - 1]);
+    // Samples j-2 .. j+1 around the interval, in the stretch and evenly
+    // spaced, else the linear value.
+    if (at <= t[start_even] || j < start_even + 2 || j + 1 >= n || !even[j - 2] || !even[j - 1] || !even[j]) {
+      out[i] = (1 - f) * y[j - 1] + f * y[j];
+      continue;
+    }
     // Weights (-s, 1 - f + s, f + s, -s): they sum to 1, reproduce a
     // line, and their squares sum to 1 with this s.
     const double s = 0.25 * (std::sqrt(1 + 8 * f * (1 - f)) - 1);

@@ -129,8 +129,11 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     out += "  as good: " + s + "\n";
   }
   for (const LookAlike& l : d.look_alikes) {
-    std::snprintf(line, sizeof line, "  the data cannot tell %s from %s (cosine %.4f); to tell them apart: ",
-                  manifest_of(l.chosen).name, manifest_of(l.alike).name, l.cosine);
+    const bool both = std::any_of(d.ambiguous.begin(), d.ambiguous.end(), [&](const std::vector<EffectKind>& set) {
+      return std::count(set.begin(), set.end(), l.chosen) > 0 && std::count(set.begin(), set.end(), l.alike) > 0;
+    });
+    std::snprintf(line, sizeof line, "  the data cannot tell %s from %s%s (cosine %.4f); to tell them apart: ",
+                  manifest_of(l.chosen).name, manifest_of(l.alike).name, both ? ", nor from both" : "", l.cosine);
     out += line + l.separate + "\n";
   }
   std::snprintf(line, sizeof line, "residual: %s (Ljung-Box Q = %.1f, white below %.1f); it follows %s (correlation %.2f)\n",

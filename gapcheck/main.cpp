@@ -1,4 +1,4 @@
-// afford_gapcheck SOURCE OUT --engine mujoco|ode --seeds dev|report [--count N] [--first SEED]
+// afford_gapcheck SOURCE OUT --engine mujoco|ode --seeds dev|report [--count N] [--first SEED] [--again]
 //
 // The withheld check of `afford gap`: draws N cases at random (design.h),
 // one per seed, has a physics engine play them (reality.h), writes each as
@@ -33,7 +33,8 @@ constexpr unsigned kFirstReportSeed = 1000000;
 
 int usage() {
   std::fprintf(stderr,
-               "usage: afford_gapcheck SOURCE OUT --engine mujoco|ode --seeds dev|report [--count N] [--first SEED]\n"
+               "usage: afford_gapcheck SOURCE OUT --engine mujoco|ode --seeds dev|report [--count N] [--first SEED] "
+               "[--again]\n"
                "  dev seeds lie below %u (default first 1), report seeds from %u on (default first %u);\n"
                "  N cases, one per seed (default 40)\n",
                kFirstReportSeed, kFirstReportSeed, kFirstReportSeed);
@@ -89,8 +90,13 @@ int main(int argc, char** argv) {
   std::string engine, seeds;
   unsigned count = 40;
   std::optional<unsigned> first;
+  bool again = false;
   for (int i = 3; i < argc; ++i) {
     const std::string arg = argv[i];
+    if (arg == "--again") {
+      again = true;
+      continue;
+    }
     if (i + 1 >= argc) return usage();
     const std::string value = argv[++i];
     if (arg == "--engine") {
@@ -118,9 +124,15 @@ int main(int argc, char** argv) {
   const std::unique_ptr<Reality> reality = reality_for(engine);
   if (!reality) return usage();
 
-  fs::remove_all(out);
-  fs::create_directories(out / "cases");
-  fs::create_directories(out / "labels");
+  if (again && !fs::is_directory(out / "cases")) {
+    std::fprintf(stderr, "afford_gapcheck: --again needs the cases of an earlier run in %s\n", (out / "cases").c_str());
+    return 2;
+  }
+  if (!again) {
+    fs::remove_all(out);
+    fs::create_directories(out / "cases");
+    fs::create_directories(out / "labels");
+  }
 
   // 1. Draw, play and write every case; the labels apart.
   struct Made {
@@ -136,9 +148,14 @@ int main(int argc, char** argv) {
     Made m;
     try {
       c = draw_case(source, out / "cases", seed);
-      for (const Drive& d : c.drives) traces.push_back(reality->play(c, d, d.noise_seed));
-      if (c.tool.actee) plates = reality->plates(c);
-      m.measurement = write_case(out, c, traces, plates);
+      if (again) {
+        m.measurement = out / "cases" / (c.name + ".yaml");
+        if (!fs::is_regular_file(m.measurement)) throw std::runtime_error("no case " + m.measurement.string());
+      } else {
+        for (const Drive& d : c.drives) traces.push_back(reality->play(c, d, d.noise_seed));
+        if (c.tool.actee) plates = reality->plates(c);
+        m.measurement = write_case(out, c, traces, plates);
+      }
     } catch (const std::exception& e) {
       // A set with a case left out would not be the set its seeds name.
       std::fprintf(stderr, "afford_gapcheck: seed %u: %s\n", seed, e.what());
