@@ -502,6 +502,28 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   auto effects_match = [&](const Scored& f) {
     return !nominal_within && (within(f, 1.0) || (matched(f) && white_under(f.fit)));
   };
+  // Each candidate is judged where it acts: an effect of the actee where
+  // the jaws deflect it, the others over every sample.
+  auto in_contact = [&](EffectKind k) { return contact_samples > 0 && manifest_of(k).home == EffectHome::actee; };
+  // An effect earns its place in a set when the set with it cuts the
+  // held-out error where the effect acts by kRealMargin against the set
+  // without it, and the training AICc by kAiccMargin. Near the floor an
+  // effect can cut only what lies above it (a heavy arm beside a damping
+  // that leaves 3 % over the floor, plain in shape): there it earns its
+  // place too where it completes the explanation (the set with it
+  // explains the gap, the set without it does not) and the held-out
+  // samples tell the two apart.
+  auto earns_place = [&](const Scored& with, const Scored& without, bool contact, EffectKind added) {
+    const double was = contact ? without.rmse_contact : without.fit.rmse_test;
+    const double now = contact ? with.rmse_contact : with.fit.rmse_test;
+    if (!(was > 0) || with.fit.aicc > without.fit.aicc - kAiccMargin) return false;
+    if (1 - now / was >= kRealMargin) return true;
+    auto where = [&](const std::vector<double>& sq) { return contact ? in_contact_only(sq, judged_in_contact) : sq; };
+    std::vector<EffectKind> others;
+    for (const EffectFit& e : without.fit.effects) others.push_back(e.kind);
+    return matched(with) && white_under(with.fit) && !effects_match(without) &&
+           paired_t(where(with.sq), where(without.sq)) >= kSeparated && !adds_nothing_to(fitter, added, others);
+  };
   Scored current_scored = nominal_scored;
   const SetFit& current = current_scored.fit;
   std::vector<EffectKind> chosen;
@@ -549,10 +571,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
         }
       }
       if (tried.empty()) break;
-      // Each candidate is judged where it acts: an effect of the actee
-      // where the jaws deflect it, the others over every sample. The best
-      // cuts the held-out RMSE there by the largest share.
-      auto in_contact = [&](EffectKind k) { return contact_samples > 0 && manifest_of(k).home == EffectHome::actee; };
+      // The best cuts the held-out RMSE where it acts by the largest share.
       auto rmse_in = [](const Scored& f, bool contact) { return contact ? f.rmse_contact : f.fit.rmse_test; };
       auto share_cut = [&](const Tried& t) {
         const bool contact = in_contact(t.set.back());
@@ -564,7 +583,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // that cuts a share where it is judged (the contact) but not the
       // training AICc must not stop another that earns both.
       auto earns = [&](const Tried& t) {
-        return share_cut(t) >= kRealMargin && t.scored.fit.aicc <= current.aicc - kAiccMargin;
+        return earns_place(t.scored, current_scored, in_contact(t.set.back()), t.set.back());
       };
       std::stable_partition(tried.begin(), tried.end(), earns);
       const Tried& best = tried.front();
@@ -643,18 +662,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       sets.push_back({library[a]});
       for (size_t b = a + 1; b < library.size(); ++b) sets.push_back({library[a], library[b]});
     }
-    // Judged where an effect acts: an actee's law in the contact.
-    auto in_contact = [&](EffectKind k) { return contact_samples > 0 && manifest_of(k).home == EffectHome::actee; };
     auto each_earns = [&](const std::vector<EffectKind>& set) {
-      const Scored& with = score(set);
       for (EffectKind k : set) {
         std::vector<EffectKind> without = set;
         std::erase(without, k);
-        const Scored& less = score(without);
-        const bool contact = in_contact(k);
-        const double was = contact ? less.rmse_contact : less.fit.rmse_test;
-        const double now = contact ? with.rmse_contact : with.fit.rmse_test;
-        if (!(was > 0 && 1 - now / was >= kRealMargin && with.fit.aicc <= less.fit.aicc - kAiccMargin)) return false;
+        if (!earns_place(score(set), score(without), in_contact(k), k)) return false;
       }
       return true;
     };
@@ -748,18 +760,18 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
                          });
     // Where the chosen set is judged (the contact, for an actee's law),
     // and, since a gain scales every reading, over every sample too.
-    auto alike_in = [&](bool in_contact) {
+    auto alike_in = [&](bool only_contact) {
       std::vector<double> gain_sq = gain.sq, set_sq = current_scored.sq;
-      if (in_contact) {
+      if (only_contact) {
         gain_sq = in_contact_only(gain.sq, judged_in_contact);
         set_sq = in_contact_only(current_scored.sq, judged_in_contact);
       }
       double gain_sum = 0;
       for (double v : gain_sq) gain_sum += v;
-      const double gain_mean = in_contact ? gain_sum / static_cast<double>(contact_samples)
+      const double gain_mean = only_contact ? gain_sum / static_cast<double>(contact_samples)
                                           : (gain.weights > 0 ? gain_sum / gain.weights : 0.0);
       auto mean_sq = [&](const Scored& f) {
-        return in_contact ? f.rmse_contact * f.rmse_contact : f.fit.rmse_test * f.fit.rmse_test;
+        return only_contact ? f.rmse_contact * f.rmse_contact : f.fit.rmse_test * f.fit.rmse_test;
       };
       const double was = mean_sq(nominal_scored);
       const double cut = was - mean_sq(current_scored);

@@ -80,4 +80,22 @@ std::vector<LookAlike> look_alikes(const Fitter& fitter, const std::vector<Effec
   return out;
 }
 
+bool adds_nothing_to(const Fitter& fitter, EffectKind k, const std::vector<EffectKind>& others) {
+  const std::vector<double> own = fitter.weighed_column(k);
+  if (own.empty() || others.empty()) return false;
+  const Eigen::Map<const Eigen::VectorXd> a(own.data(), static_cast<long>(own.size()));
+  Eigen::MatrixXd basis(a.size(), 0);
+  for (EffectKind o : others) {
+    const std::vector<double> c = fitter.weighed_column(o);
+    if (c.size() != own.size()) continue;
+    basis.conservativeResize(Eigen::NoChange, basis.cols() + 1);
+    basis.col(basis.cols() - 1) = Eigen::Map<const Eigen::VectorXd>(c.data(), static_cast<long>(c.size()));
+  }
+  const double norm = a.norm();
+  if (basis.cols() == 0 || !(norm > 0)) return false;
+  // The cosine between the column and its part in the others' span.
+  const double off = without(a, basis).norm() / norm;
+  return std::sqrt(std::max(0.0, 1 - off * off)) >= kLookAlike;
+}
+
 }  // namespace afford

@@ -26,4 +26,11 @@ struct LookAlike {
 std::vector<LookAlike> look_alikes(const Fitter& fitter, const std::vector<EffectKind>& chosen,
                                    const std::vector<EffectKind>& library);
 
+// Whether effect k's column lies, at a cosine of at least kLookAlike, in
+// the span of `others`' columns: added to them it can only trade large
+// opposite values with them (a weight and a preload one way up), never
+// tell the data anything they do not. False for the actee's law, which has
+// no column over every sample.
+bool adds_nothing_to(const Fitter& fitter, EffectKind k, const std::vector<EffectKind>& others);
+
 }  // namespace afford
