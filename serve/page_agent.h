@@ -44,7 +44,7 @@ PageGrip page_grip(const CompiledSession& session);
 struct PageStart {
   Eigen::Vector3d hand_position = Eigen::Vector3d::Zero();  // m, world
   Eigen::Quaterniond hand_rotation = Eigen::Quaterniond::Identity();
-  std::array<Eigen::Vector3d, kFingers> open_fingertip{};  // m, hand frame
+  FingerPoints open_fingertip = finger_origins();  // m, hand frame
   JointAngles open_joint{};                                 // rad
 };
 PageStart page_start(const CompiledSession& session);

@@ -156,6 +156,16 @@ struct ActeeSpec {
 
 inline constexpr int kFingers = 5;  // thumb, index, middle, ring, little
 inline constexpr int kJoints = 3;   // distal, proximal, metacarpal (Fig. 8)
+
+// A point per finger, each at the origin. Eigen's vectors are not zeroed
+// by `{}` (their default constructor leaves the memory as it was), so an
+// array of them is given its zeros by this.
+using FingerPoints = std::array<Eigen::Vector3d, kFingers>;
+inline FingerPoints finger_origins() {
+  FingerPoints points;
+  points.fill(Eigen::Vector3d::Zero());
+  return points;
+}
 extern const std::array<const char*, kFingers> kFingerNames;
 extern const std::array<const char*, kJoints> kJointNames;
 

@@ -120,7 +120,7 @@ struct Model {
   // the fingertips are not limited.
   bool has_reach = false;
   std::string agent_file;                                      // where the chains were written, for errors
-  std::array<Eigen::Vector3d, kFingers> finger_base{};         // m, hand frame: the chain's first joint
+  FingerPoints finger_base = finger_origins();         // m, hand frame: the chain's first joint
   std::array<std::array<double, kJoints>, kFingers> link{};    // m, [distal, proximal, metacarpal]
   std::array<double, kFingers> chain_min{}, chain_max{};       // m, the tip's distance from the base
   std::array<double, kFingers> reach_min{}, reach_max{};       // m, the tip's distance from the wrist

@@ -12,7 +12,7 @@ namespace afford {
 struct Sample {
   double t = 0;                                         // s
   Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();  // world pose of the hand (wrist)
-  std::array<Eigen::Vector3d, kFingers> fingertip{};     // m, world; [0] is the thumb
+  FingerPoints fingertip = finger_origins();     // m, world; [0] is the thumb
   std::array<std::array<double, kJoints>, kFingers> joint{};  // rad: distal, proximal, metacarpal
 };
 

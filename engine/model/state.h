@@ -68,7 +68,7 @@ struct State {
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();  // world from object frame
   Eigen::Isometry3d actee_pose = Eigen::Isometry3d::Identity();   // world from actee frame
   Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();         // world, from the sample
-  std::array<Eigen::Vector3d, kFingers> fingertip{};              // m, world
+  FingerPoints fingertip = finger_origins();              // m, world
   std::array<double, kFingers> reach_short{};  // m, how far the sample asked each tip beyond its reach, where it stopped (reach.h); 0: within
   std::array<std::array<double, kJoints>, kFingers> joint{};      // rad
   int grasp_type = -1;  // the posture's type in the model's taxonomy this frame; -1: none

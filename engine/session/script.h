@@ -132,7 +132,7 @@ struct KeyframeSpec {
   PoseSpec hand;  // world
   FingerSource fingers = FingerSource::carried;
   GripSpec grip;
-  std::array<Eigen::Vector3d, kFingers> fingertip{};  // m, hand frame (fingertips)
+  FingerPoints fingertip = finger_origins();  // m, hand frame (fingertips)
   PostureSource posture = PostureSource::carried;
   std::string posture_name;
   JointAngles joint{};  // rad (angles)
@@ -164,7 +164,7 @@ struct Keyframe {
   double t = 0;                                                  // s
   Eigen::Vector3d hand_position = Eigen::Vector3d::Zero();       // m, world
   Eigen::Quaterniond hand_rotation = Eigen::Quaterniond::Identity();  // world from hand, unit
-  std::array<Eigen::Vector3d, kFingers> fingertip{};             // m, hand frame
+  FingerPoints fingertip = finger_origins();             // m, hand frame
   JointAngles joint{};                                           // rad
 
   // When the fingers come from a grip: the thumb is the point thumb_rest
