@@ -232,6 +232,13 @@ std::string effects_text(const std::vector<EffectKind>& set) {
   return s.empty() ? "the nominal model" : s;
 }
 
+// Sets, one after another: "friction | damping + preload".
+std::string sets_text(const std::vector<std::vector<EffectKind>>& sets) {
+  std::string s;
+  for (const std::vector<EffectKind>& set : sets) s += (s.empty() ? "" : " | ") + effects_text(set);
+  return s;
+}
+
 // Each trace's residual under the nominal model and under the set fitted
 // on the folds that did not judge it, as signals to plot.
 std::vector<HeldOutCurve> held_out_curves(const std::vector<Replay>& replays, const Fitter& fitter, const SetFit& nominal,
@@ -638,11 +645,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       if (runner_up_explains) {
         d.steps.push_back("  as good as " + effects_text(best.set) + ", which cut more where it acts, and it explains the gap");
       }
-      if (branches.size() > 1) {
-        std::string alike;
-        for (size_t j = 1; j < branches.size(); ++j) alike += (j > 1 ? " | " : "") + effects_text(branches[j]);
-        d.steps.push_back("  as good: " + alike);
-      }
+      if (branches.size() > 1) d.steps.push_back("  as good: " + sets_text({branches.begin() + 1, branches.end()}));
       current_scored = pick.scored;
       if (effects_match(current_scored)) break;
     }
@@ -705,11 +708,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       chosen = branches.front();
       current_scored = best;
       d.steps.push_back(step_line("smallest set that explains, " + effects_text(chosen) + ":", best));
-      if (branches.size() > 1) {
-        std::string alike;
-        for (size_t j = 1; j < branches.size(); ++j) alike += (j > 1 ? " | " : "") + effects_text(branches[j]);
-        d.steps.push_back("  as good: " + alike);
-      }
+      if (branches.size() > 1) d.steps.push_back("  as good: " + sets_text({branches.begin() + 1, branches.end()}));
       break;
     }
   }
