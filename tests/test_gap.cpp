@@ -694,7 +694,7 @@ fs::path squeezed_hazelnut(const std::string& name, double exponent) {
                     torque / b + effort_noise(random), force);
       csv += row;
     }
-    write(dir / ("s" + std::to_string(n) + ".csv"), csv);
+    write(dir / std::string("s").append(std::to_string(n)).append(".csv"), csv);
     traces += (n ? ", s" : "s") + std::to_string(n) + ".csv";
   }
   write(dir / "m.yaml", head + "traces: [" + traces + "]\n");
@@ -968,7 +968,7 @@ fs::path formula_nuts(const std::string& name, double exponent, const double (&s
       std::snprintf(row, sizeof row, "%.3f,%.9g,%.6f\n", 0.025 * i, d, force + noise(random));
       csv += row;
     }
-    write(dir / ("n" + std::to_string(n) + ".csv"), csv);
+    write(dir / std::string("n").append(std::to_string(n)).append(".csv"), csv);
   }
   write(dir / "m.yaml", "measurement: nuts\nrig: plates\nactee: {file: " + kSource +
                             "/actees/macadamia.yaml}\ntraces: [n0.csv, n1.csv, n2.csv]\n");

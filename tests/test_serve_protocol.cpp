@@ -190,7 +190,7 @@ TEST(ServeProtocol, SmallMessagesAreJson) {
   EXPECT_EQ(Json::parse(hello_message(true))["role"], "driver");
   EXPECT_EQ(Json::parse(role_message(false))["role"], "watcher");
   EXPECT_EQ(Json::parse(error_message("bad \"x\"\n"))["message"], "bad \"x\"\n");
-  EXPECT_NO_THROW(Json::parse(error_message(std::string("\xff\xfe", 2))));  // never invalid JSON
+  EXPECT_TRUE(Json::accept(error_message(std::string("\xff\xfe", 2))));  // never invalid JSON
 }
 
 // ------------------------------------------------------------ the page's hand
@@ -365,7 +365,7 @@ TEST(ServeTrial, EveryShippedSessionCanBeServed) {
     EXPECT_EQ(trial.model.has_actee, session.model.has_actee);
     EXPECT_EQ(trial.model.actee_name, session.model.actee_name);
     SceneInfo info{1, "p", "r", trial.model.actee_name, {}};
-    EXPECT_NO_THROW(Json::parse(scene_message(trial, grip, start, command_limits(trial.model, grip, start), info)));
+    EXPECT_TRUE(Json::accept(scene_message(trial, grip, start, command_limits(trial.model, grip, start), info)));
     ++sessions;
   }
   EXPECT_GE(sessions, 5);
