@@ -170,8 +170,20 @@ LinkInertial inertial_of(const UrdfText& urdf, const urdf::Link& link, const Iso
 }
 
 // Each link's frame in the root link's, every joint at zero.
+// urdfdom's links hold their children by shared pointer, so a joint from a
+// link to itself, which it accepts, makes a loop never freed: every link's
+// children are let go when the reading ends, however it ends.
+struct CutChildLinks {
+  urdf::ModelInterface& model;
+  ~CutChildLinks() {
+    for (auto& [name, link] : model.links_) link->child_links.clear();
+  }
+};
+
+// A link met twice (urdfdom can leave a joint whose parent is its child)
+// is placed once: a loop ends.
 void place_links(const urdf::Link& link, const Isometry3d& pose, std::map<std::string, Isometry3d>& out) {
-  out[link.name] = pose;
+  if (!out.emplace(link.name, pose).second) return;
   for (const auto& child : link.child_links) {
     const auto& joint = child->parent_joint;
     place_links(*child, pose * pose_of(joint->parent_to_joint_origin_transform), out);
@@ -187,6 +199,7 @@ UrdfTool read_urdf_tool(const std::string& path, const std::string& fixed, const
   const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf.xml);
   console_bridge::restorePreviousOutputHandler();
   if (!model) fail(urdf.at("robot"), "a URDF urdfdom can read", errors.last.empty() ? "it could not" : shorten(errors.last));
+  const CutChildLinks cut_at_exit{*model};
 
   // The joint: the one revolute (or continuous) joint, or the one between
   // the named links.
@@ -240,8 +253,17 @@ UrdfTool read_urdf_tool(const std::string& path, const std::string& fixed, const
     }
   }
 
+  if (tool.fixed_link == tool.moving_link) {
+    fail(urdf.at("joint", joint->name), "two links in joint '" + joint->name + "'", "link '" + tool.fixed_link + "' on both sides");
+  }
   std::map<std::string, Isometry3d> frames;
   place_links(*model->getRoot(), Isometry3d::Identity(), frames);
+  for (const std::string& link : {tool.fixed_link, tool.moving_link}) {
+    if (!frames.count(link)) {
+      fail(urdf.at("joint", joint->name), "links in the tree of the root link '" + model->getRoot()->name + "'",
+           "link '" + link + "' outside it");
+    }
+  }
   const Isometry3d to_fixed = frames.at(tool.fixed_link).inverse();
   const Isometry3d joint_frame = to_fixed * frames.at(joint->parent_link_name) *
                                  pose_of(joint->parent_to_joint_origin_transform);

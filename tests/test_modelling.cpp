@@ -473,6 +473,10 @@ TEST(ModelUrdfErrors, EachNamesTheFileAndTheElement) {
   EXPECT_THAT(zero, ::testing::HasSubstr(".urdf:4:3: expected an axis of some length in joint 'j', found (0.000000, 0.000000, 0.000000)"));
   EXPECT_THAT(urdf_error(replace_once(arms("revolute", "0 0 1"), "upper=\"0.5\"", "upper=\"-0.5\"")),
               ::testing::HasSubstr(".urdf:4:3: expected a lower limit below the upper in joint 'j'"));
+  // A joint from a link to itself (found by fuzz_urdf; it threw
+  // std::out_of_range).
+  EXPECT_THAT(urdf_error(replace_once(arms("revolute", "0 0 1"), "<parent link=\"a\"/>", "<parent link=\"b\"/>")),
+              ::testing::HasSubstr(".urdf:4:3: expected two links in joint 'j', found link 'b' on both sides"));
 }
 
 TEST(ModelUrdf, PrimitivesStandForMeshes) {
