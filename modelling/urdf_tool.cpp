@@ -169,7 +169,6 @@ LinkInertial inertial_of(const UrdfText& urdf, const urdf::Link& link, const Iso
   return out;
 }
 
-// Each link's frame in the root link's, every joint at zero.
 // urdfdom's links hold their children by shared pointer, so a joint from a
 // link to itself, which it accepts, makes a loop never freed: every link's
 // children are let go when the reading ends, however it ends.
@@ -180,8 +179,9 @@ struct CutChildLinks {
   }
 };
 
-// A link met twice (urdfdom can leave a joint whose parent is its child)
-// is placed once: a loop ends.
+// Each link's frame in the root link's, every joint at zero. A link met
+// twice (urdfdom can leave a joint whose parent is its child) is placed
+// once: a loop ends.
 void place_links(const urdf::Link& link, const Isometry3d& pose, std::map<std::string, Isometry3d>& out) {
   if (!out.emplace(link.name, pose).second) return;
   for (const auto& child : link.child_links) {
