@@ -56,7 +56,7 @@ ReportStatus ReportDecoder::decode(std::span<const std::uint8_t> report, double 
   // Channels, then the sample's parts; nothing is written to *out until
   // every value is known to be good.
   Eigen::Vector3d hand_pos = Eigen::Vector3d::Zero(), hand_rot = Eigen::Vector3d::Zero();
-  std::array<Eigen::Vector3d, kFingers> tip{};
+  FingerPoints tip = finger_origins();  // m, hand frame; a finger the device does not sense stays at the wrist
   std::array<std::array<double, kJoints>, kFingers> joint{};
   for (size_t i = 0; i < device_.fields.size(); ++i) {
     const Field& f = device_.fields[i];

@@ -158,6 +158,9 @@ TEST(ReportDecoder, DecodesEndiannessSignScaleAndOffset) {
   EXPECT_NEAR(dec.channels()[0], -12.34 * kDeg, 1e-12);
   // A joint the device does not sense is neutral, within its range.
   EXPECT_EQ(s.joint[2][1], 0.0);
+  // A fingertip the device neither senses nor derives from a chain sits
+  // at the wrist, not at whatever the decoder's memory held.
+  for (int fi = 0; fi < kFingers; ++fi) EXPECT_EQ(s.fingertip[fi], s.hand.translation()) << fi;
   EXPECT_EQ(dec.count(ReportStatus::ok), 1);
 }
 
