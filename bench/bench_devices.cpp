@@ -16,11 +16,12 @@
 #include "report_decoder.h"
 #include "resample.h"
 #include "usb_device.h"
+#include "bench_source.h"
 
 namespace afford {
 namespace {
 
-const std::string kSource = AFFORD_SOURCE_DIR;
+using bench::kSource;
 
 Model hand_model() { return compile_agent_only(load_agent(kSource + "/agents/hand.yaml")); }
 

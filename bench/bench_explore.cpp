@@ -10,11 +10,12 @@
 #include "explore.h"
 #include "parallel.h"
 #include "results.h"
+#include "bench_source.h"
 
 namespace afford {
 namespace {
 
-const std::string kSource = AFFORD_SOURCE_DIR;
+using bench::kSource;
 
 const Explorer& nutcracker_grid() {
   static const Explorer e = [] {

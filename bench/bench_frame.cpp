@@ -8,11 +8,12 @@
 #include "scripted_agent.h"
 #include "session.h"
 #include "state.h"
+#include "bench_source.h"
 
 namespace afford {
 namespace {
 
-const std::string kSource = AFFORD_SOURCE_DIR;
+using bench::kSource;
 
 // Steps through every frame of a session, over and over (the state is reset
 // between passes, outside the timing and the allocation count).

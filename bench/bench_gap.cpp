@@ -18,11 +18,12 @@
 
 #include "diagnose.h"
 #include "state.h"
+#include "bench_source.h"
 
 namespace afford {
 namespace {
 
-const std::string kSource = AFFORD_SOURCE_DIR;
+using bench::kSource;
 
 // `detent` (N*m): a bump of that height about 18 deg, 2 deg wide, in place
 // of the friction and damping: outside the library, so that nothing

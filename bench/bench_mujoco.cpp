@@ -18,11 +18,12 @@
 
 #include "mujoco_harness.h"
 #include "session.h"
+#include "bench_source.h"
 
 namespace afford {
 namespace {
 
-const std::string kSource = AFFORD_SOURCE_DIR;
+using bench::kSource;
 
 void BM_MujocoStep(benchmark::State& bench, const char* name) {
   const CompiledSession session = load_session(kSource + "/sessions/" + name + ".yaml");

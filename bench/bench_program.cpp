@@ -12,11 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "bench_source.h"
+
 extern char** environ;
 
 namespace {
 
-const std::string kSource = AFFORD_SOURCE_DIR;
+using afford::bench::kSource;
 const std::string kProgram = AFFORD_PROGRAM;
 
 // Runs the program with args, its output thrown away; the exit status.

@@ -7,11 +7,12 @@
 #include "run.h"
 #include "scripted_agent.h"
 #include "session.h"
+#include "bench_source.h"
 
 namespace afford {
 namespace {
 
-const std::string kSource = AFFORD_SOURCE_DIR;
+using bench::kSource;
 
 // Counts the allocations made from the end of the first frame to the end of
 // the last: what the frames themselves allocate.

@@ -27,9 +27,9 @@
 namespace afford::cli {
 namespace {
 
-std::atomic<bool> g_stop{false};
+std::atomic<bool> g_serve_stop{false};
 
-extern "C" void on_serve_interrupt(int) { g_stop.store(true); }
+extern "C" void on_serve_interrupt(int) { g_serve_stop.store(true); }
 
 struct ServeCliOptions {
   serve::ServeOptions server;
@@ -60,7 +60,7 @@ int serve_session(ServeCliOptions o) {
   }
   std::fflush(stdout);
   while (!server.wait(0.02)) {  // Ctrl-C is seen within 20 ms
-    if (g_stop.load()) break;
+    if (g_serve_stop.load()) break;
   }
   server.stop();
   std::signal(SIGINT, previous);

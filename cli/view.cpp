@@ -19,9 +19,9 @@
 namespace afford::cli {
 namespace {
 
-std::atomic<bool> g_stop{false};
+std::atomic<bool> g_view_stop{false};
 
-extern "C" void on_view_interrupt(int) { g_stop.store(true); }
+extern "C" void on_view_interrupt(int) { g_view_stop.store(true); }
 
 struct ViewCliOptions {
   serve::ViewOptions viewer;
@@ -47,7 +47,7 @@ int view(ViewCliOptions o) {
   auto previous = std::signal(SIGINT, on_view_interrupt);
   auto previous_term = std::signal(SIGTERM, on_view_interrupt);
   const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(std::min(o.duration, 1e9));
-  while (!g_stop.load() && std::chrono::steady_clock::now() < until) {
+  while (!g_view_stop.load() && std::chrono::steady_clock::now() < until) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   viewer.stop();

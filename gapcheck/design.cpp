@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <random>
 #include <stdexcept>
+#include <numbers>
 
 #include "tools.h"
 
@@ -16,7 +17,6 @@ namespace fs = std::filesystem;
 namespace gapcheck {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kClosingStroke = 0.85;  // of a closing-only stroke's period, the closing
 using Rng = std::mt19937;
 
@@ -41,12 +41,12 @@ double splitmix(uint64_t& state) {
 // of k a_k is at most 0.8), so every period still reaches high and low.
 double warped_phase(unsigned seed, double period, double t) {
   uint64_t state = seed;
-  double phase = 2 * kPi * t / period;
+  double phase = 2 * std::numbers::pi * t / period;
   double budget = 0.8;
   for (int k = 1; k <= 3; ++k) {
     const double a = budget * splitmix(state) / k;
-    const double start = 2 * kPi * splitmix(state);
-    phase += a * (std::sin(2 * kPi * k * t / period + start) - std::sin(start));
+    const double start = 2 * std::numbers::pi * splitmix(state);
+    phase += a * (std::sin(2 * std::numbers::pi * k * t / period + start) - std::sin(start));
     budget -= k * a;
   }
   return phase;
@@ -77,7 +77,7 @@ const char* actee_scenario_name(ActeeScenario s) {
 
 double Drive::target(double t) const {
   const double cycles = std::max(1.0, std::round(seconds / period));
-  const double phase = shape == DriveShape::smooth_random && !closing_only ? warped_phase(shape_seed, period, t) / (2 * kPi)
+  const double phase = shape == DriveShape::smooth_random && !closing_only ? warped_phase(shape_seed, period, t) / (2 * std::numbers::pi)
                                                                           : t / period;  // periods
   const double k = std::floor(phase);
   const double p = phase - k;
@@ -88,12 +88,12 @@ double Drive::target(double t) const {
     // speeds up and slows down), then the hand lets go and is back at the
     // top quickly (a half cosine too, not a step the servo could not
     // follow), unseen (measured()).
-    s = p < kClosingStroke ? 0.5 * (1 - std::cos(kPi * p / kClosingStroke))
-                           : 0.5 * (1 + std::cos(kPi * (p - kClosingStroke) / (1 - kClosingStroke)));
+    s = p < kClosingStroke ? 0.5 * (1 - std::cos(std::numbers::pi * p / kClosingStroke))
+                           : 0.5 * (1 + std::cos(std::numbers::pi * (p - kClosingStroke) / (1 - kClosingStroke)));
   } else {
     switch (shape) {
       case DriveShape::sine:
-      case DriveShape::smooth_random: s = 0.5 * (1 - std::cos(2 * kPi * p)); break;
+      case DriveShape::smooth_random: s = 0.5 * (1 - std::cos(2 * std::numbers::pi * p)); break;
       case DriveShape::uneven_triangle: s = p < closing_share ? p / closing_share : (1 - p) / (1 - closing_share); break;
       case DriveShape::ramp_and_hold: s = p < 0.25 ? 4 * p : p < 0.5 ? 1.0 : p < 0.75 ? 3 - 4 * p : 0.0; break;
     }
@@ -299,7 +299,7 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed)
   // free drive (at least ten times as stiff as the tool's spring).
   c.hand.mass = uniform(rng, 0.03, 0.1);
   const double hand_inertia = c.hand.mass * b * b;  // kg*m^2
-  const double free_kp = std::max(hand_inertia * std::pow(2 * kPi * uniform(rng, 8, 20), 2), 10 * c.tool.torsion);
+  const double free_kp = std::max(hand_inertia * std::pow(2 * std::numbers::pi * uniform(rng, 8, 20), 2), 10 * c.tool.torsion);
   const double free_kv = 2 * uniform(rng, 0.5, 1.0) * std::sqrt(free_kp * hand_inertia);
   double actee_rotational = 0;  // N*m/rad, the specimen's stiffness about the hinge
   if (c.tool.actee) {
@@ -311,7 +311,7 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed)
   // The drives.
   const int traces = integer(rng, 1, 4);
   const bool several_turns = traces >= 2 && chance(rng, 0.5);
-  const double turns[] = {0, 0.5 * kPi, kPi, -0.5 * kPi};
+  const double turns[] = {0, 0.5 * std::numbers::pi, std::numbers::pi, -0.5 * std::numbers::pi};
   const double one_turn = turns[integer(rng, 0, 3)];
   for (int i = 0; i < traces; ++i) {
     Drive d;

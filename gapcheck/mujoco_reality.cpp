@@ -27,6 +27,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <numbers>
 
 #include "jaw_contact.h"
 #include "plates_fit.h"
@@ -36,7 +37,6 @@
 namespace gapcheck {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kG = 9.81;  // m/s^2
 // kg*m^2: the arm's inertia when none is hidden: below the noise at any
 // drive's acceleration (1e-6 * 400 rad/s^2 is 4e-4 N*m); the design damps

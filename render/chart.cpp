@@ -6,11 +6,11 @@
 
 #include "axis_range.h"
 #include "canvas.h"
+#include "palette.h"
 
 namespace afford::render {
 namespace {
 
-constexpr Rgb kInk{40, 44, 52}, kGrid{225, 228, 234}, kAxisInk{120, 126, 138}, kPanel{252, 252, 253};
 constexpr Rgb kMarker{150, 150, 160};
 constexpr double kLeft = 86, kTop = 70, kBottom = 64;
 constexpr double kKey = 34, kGap = 16;  // px: a legend entry's line or swatch with its space; panel to legend

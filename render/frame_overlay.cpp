@@ -4,12 +4,13 @@
 #include <cstdio>
 #include <numbers>
 
+#include "palette.h"
 #include "text_fit.h"
 
 namespace afford::render {
 namespace {
 
-constexpr Rgb kBar{28, 32, 42}, kWhite{255, 255, 255}, kInferredInk{255, 220, 120};
+constexpr Rgb kBar{28, 32, 42}, kInferredInk{255, 220, 120};
 constexpr const char* kInfoSep = "   ";
 constexpr const char* kInferredSep = "  ";
 
@@ -59,12 +60,6 @@ int place_keys(bool column, int x, int y, int width, std::vector<std::pair<int, 
   return column ? static_cast<int>(std::size(kKeys)) : rows;
 }
 
-std::string fmt(const char* f, double a) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, a);
-  return buf;
-}
-
 }  // namespace
 
 int overlay_scale(int width, int height) { return width >= 480 && height >= 240 ? 2 : 1; }
@@ -76,9 +71,9 @@ int info_width(int width, int height) {
 
 std::vector<std::vector<std::string>> info_groups(const Model& m, const State& s) {
   std::vector<std::vector<std::string>> g;
-  g.push_back({fmt("t %.3f s", s.t), fmt("angle %.1f deg", s.theta * 180 / std::numbers::pi)});
-  g.push_back({fmt("effort %.1f N", s.effort_force)});
-  if (m.has_actee) g.back().push_back(fmt("actee %.1f", s.actee_force) + fmt(" / %.0f N", m.actee_limit));
+  g.push_back({printf_number("t %.3f s", s.t), printf_number("angle %.1f deg", s.theta * 180 / std::numbers::pi)});
+  g.push_back({printf_number("effort %.1f N", s.effort_force)});
+  if (m.has_actee) g.back().push_back(printf_number("actee %.1f", s.actee_force) + printf_number(" / %.0f N", m.actee_limit));
   std::vector<std::string> state;
   if (m.has_actee) {
     state.push_back(m.actee_name + ": " + condition_name(s.condition));
@@ -93,7 +88,7 @@ size_t info_lines_needed(const Model& m, const State& s, int width, int height) 
   return flow(info_groups(m, s), info_width(width, height), overlay_scale(width, height), kInfoSep).size();
 }
 
-std::string inferred_item(const std::string& function, double t) { return function + fmt(" %.2f s", t); }
+std::string inferred_item(const std::string& function, double t) { return function + printf_number(" %.2f s", t); }
 
 std::vector<std::string> info_text(const FrameLayout& l, const std::vector<std::vector<std::string>>& info) {
   return flow(info, info_width(l.width, l.height), l.scale, kInfoSep, l.info_lines);

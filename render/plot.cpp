@@ -7,22 +7,22 @@
 
 #include "axis_range.h"
 #include "canvas.h"
+#include "palette.h"
 
 namespace afford::render {
 namespace {
 
-constexpr Rgb kInk{40, 44, 52}, kGrid{225, 228, 234}, kAxis{120, 126, 138}, kPanel{252, 252, 253};
 constexpr Rgb kAngle{52, 101, 164}, kEffort{230, 140, 10}, kActeeForce{200, 30, 30}, kLimit{120, 20, 20};
 constexpr Rgb kReached{40, 150, 70}, kLost{200, 60, 40};
 
-constexpr int kLeft = 86, kRight = 200, kTop = 58, kPanelA = 170, kGap = 34, kPanelB = 230, kLane = 24;
+constexpr int kPlotLeft = 86, kRight = 200, kPlotTop = 58, kPanelA = 170, kPanelGap = 34, kPanelB = 230, kLane = 24;
 
 void draw(Canvas& c, const Timeline& tl, int width, int height) {
   // The lanes' function names (from the rules, any length) stand left of
   // the panels: the margin grows to the longest, up to a third of the width.
   double names = 0;
   for (const std::string& f : tl.functions) names = std::max(names, c.text_width(f));
-  const double x0 = std::clamp(names + 20, static_cast<double>(kLeft), width / 3.0), x1 = width - kRight;
+  const double x0 = std::clamp(names + 20, static_cast<double>(kPlotLeft), width / 3.0), x1 = width - kRight;
   const double t_end = std::max(tl.end_time, tl.samples.empty() ? 1.0 : tl.samples.back().t);
   auto X = [&](double t) { return x0 + t / std::max(t_end, 1e-9) * (x1 - x0); };
   const double rad2deg = 180 / std::numbers::pi;
@@ -44,9 +44,9 @@ void draw(Canvas& c, const Timeline& tl, int width, int height) {
   const AxisRange a_range = axis_range(a_lo, std::max(a_hi, a_lo + 1), 5, 0.04);
   const AxisRange f_range = axis_range(f_lo, std::max(f_hi, f_lo + 1), 6, 0.04);
   const double a_step = a_range.step, f_step = f_range.step;
-  const Axis angle{a_range.lo, a_range.hi, kTop, kTop + kPanelA};
-  const Axis force{f_range.lo, f_range.hi, kTop + kPanelA + kGap, kTop + kPanelA + kGap + kPanelB};
-  const double lanes_top = force.bottom + kGap;
+  const Axis angle{a_range.lo, a_range.hi, kPlotTop, kPlotTop + kPanelA};
+  const Axis force{f_range.lo, f_range.hi, kPlotTop + kPanelA + kPanelGap, kPlotTop + kPanelA + kPanelGap + kPanelB};
+  const double lanes_top = force.bottom + kPanelGap;
   const double lanes_bottom = lanes_top + kLane * static_cast<double>(tl.functions.size());
   const double t_step = tick_step(t_end, 10);
 
@@ -56,19 +56,19 @@ void draw(Canvas& c, const Timeline& tl, int width, int height) {
     for (double v = std::ceil(axis.lo / step - 1e-9) * step; v <= axis.hi + step * 1e-6; v += step) {
       const double y = axis.y(v);
       c.line(x0, y, x1, y, kGrid, 1);
-      c.line(x0 - 5, y, x0, y, kAxis, 1);
+      c.line(x0 - 5, y, x0, y, kAxisInk, 1);
       c.text(x0 - 8, y, tick_label(v, step), kInk, Anchor::end);
     }
     for (double t = 0; t <= t_end + t_step * 1e-6; t += t_step) c.line(X(t), axis.top, X(t), axis.bottom, kGrid, 1);
-    c.line(x0, axis.top, x0, axis.bottom, kAxis, 1);
-    c.line(x0, axis.bottom, x1, axis.bottom, kAxis, 1);
+    c.line(x0, axis.top, x0, axis.bottom, kAxisInk, 1);
+    c.line(x0, axis.bottom, x1, axis.bottom, kAxisInk, 1);
     c.text(x0, axis.top - 12, unit, kInk);  // over the panel: clear of the tick labels left of it
   }
   // Time axis under the lanes.
   const double t_axis = lanes_bottom + 6;
-  c.line(x0, t_axis, x1, t_axis, kAxis, 1);
+  c.line(x0, t_axis, x1, t_axis, kAxisInk, 1);
   for (double t = 0; t <= t_end + t_step * 1e-6; t += t_step) {
-    c.line(X(t), t_axis, X(t), t_axis + 5, kAxis, 1);
+    c.line(X(t), t_axis, X(t), t_axis + 5, kAxisInk, 1);
     c.text(X(t), t_axis + 16, tick_label(t, t_step), kInk, Anchor::middle);
   }
   c.text((x0 + x1) / 2, t_axis + 36, "time [s]", kInk, Anchor::middle);
@@ -195,7 +195,7 @@ void TimelineRecorder::on_frame(const Model&, const State& s, const RuleSet& rul
 }
 
 int plot_height(const Timeline& tl) {
-  return kTop + kPanelA + kGap + kPanelB + kGap + kLane * static_cast<int>(tl.functions.size()) + 56;
+  return kPlotTop + kPanelA + kPanelGap + kPanelB + kPanelGap + kLane * static_cast<int>(tl.functions.size()) + 56;
 }
 
 std::string plot_svg(const Timeline& tl, int width) {

@@ -18,20 +18,20 @@ namespace {
 using Eigen::Isometry3d;
 using Eigen::Vector3d;
 
-struct Colour {
+struct GlColour {
   float r, g, b, a = 1;
 };
 // The palette (before lighting).
-constexpr Colour kFixedArm{0.58f, 0.60f, 0.64f};
-constexpr Colour kMovingArm{0.33f, 0.48f, 0.72f};
-constexpr Colour kStressed{0.86f, 0.20f, 0.14f};
-constexpr Colour kThumb{0.92f, 0.45f, 0.35f};
-constexpr Colour kFinger{0.95f, 0.72f, 0.58f};
-constexpr Colour kHand{0.95f, 0.76f, 0.64f, 0.28f};
-constexpr Colour kObjectActeeContact{0.15f, 0.80f, 0.30f};
-constexpr Colour kAgentContact{0.10f, 0.65f, 0.95f};
-constexpr Colour kEffortArrow{0.98f, 0.62f, 0.05f};
-constexpr Colour kActeeArrow{0.85f, 0.10f, 0.10f};
+constexpr GlColour kFixedArm{0.58f, 0.60f, 0.64f};
+constexpr GlColour kMovingArm{0.33f, 0.48f, 0.72f};
+constexpr GlColour kStressed{0.86f, 0.20f, 0.14f};
+constexpr GlColour kThumb{0.92f, 0.45f, 0.35f};
+constexpr GlColour kFinger{0.95f, 0.72f, 0.58f};
+constexpr GlColour kHand{0.95f, 0.76f, 0.64f, 0.28f};
+constexpr GlColour kObjectActeeContact{0.15f, 0.80f, 0.30f};
+constexpr GlColour kAgentContact{0.10f, 0.65f, 0.95f};
+constexpr GlColour kEffortArrow{0.98f, 0.62f, 0.05f};
+constexpr GlColour kActeeArrow{0.85f, 0.10f, 0.10f};
 
 // Knuckles in the hand frame (engine/session/script.h: +x to the fingers, +y to the
 // thumb, the palm facing -z) and the palm box.
@@ -59,9 +59,9 @@ void clip_planes(const Camera& c, double* near_m, double* far_m) {
   *far_m = d * 6 + 1;
 }
 
-void set_colour(const Colour& c) { gl().Color4f(c.r, c.g, c.b, c.a); }
+void set_colour(const GlColour& c) { gl().Color4f(c.r, c.g, c.b, c.a); }
 
-Colour mix(const Colour& a, const Colour& b, float t) {
+GlColour mix(const GlColour& a, const GlColour& b, float t) {
   return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t, a.a + (b.a - a.a) * t};
 }
 
@@ -78,7 +78,7 @@ void push_pose(const Isometry3d& pose) {
   gl().MultMatrixf(m.data());
 }
 
-Colour colour_of(const ActeeLook::Srgb& c) { return {c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f}; }
+GlColour colour_of(const ActeeLook::Srgb& c) { return {c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f}; }
 
 // Scales by k along d (unit) and by `across` across it.
 void squash_along(const Vector3d& d, double k, double across) {
@@ -288,7 +288,7 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
     im.shape.clear();
     add_shape(im.shape, m.actee());
     const ActeeLook& look = m.actee_look;
-    const Colour outside = colour_of(look.colour), inside = colour_of(look.inside);
+    const GlColour outside = colour_of(look.colour), inside = colour_of(look.inside);
     const double load = m.actee_limit > 0 ? std::clamp(s.actee_load / m.actee_limit, 0.0, 1.0) : 0.0;
     push_pose(s.actee_pose);
     if (s.condition == ActeeCondition::broken) {
@@ -317,7 +317,7 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
       set_colour(inside);
       draw(im.shards);
       gl().CullFace(GL_BACK);
-      set_colour(mix(outside, Colour{0, 0, 0}, 0.12f));  // a little darker: broken
+      set_colour(mix(outside, GlColour{0, 0, 0}, 0.12f));  // a little darker: broken
       draw(im.shards);
     } else {
       // Flattened along A_d by the compression (half from each side),
@@ -394,7 +394,7 @@ Image Renderer::render(const Model& m, const State& s, const Camera& camera, con
   if (overlays) gl().DepthRange(0.0, 0.5);
   if (o.contacts) {
     const double r = scene * 0.022;
-    auto markers = [&](const ContactSet& set, const Colour& c) {
+    auto markers = [&](const ContactSet& set, const GlColour& c) {
       set_colour(c);
       for (int i = 0; i < std::min(set.count, kMaxContacts); ++i) {
         const Vector3d& p = set.point[static_cast<size_t>(i)].point;

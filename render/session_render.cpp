@@ -9,6 +9,7 @@
 
 #include "frame_overlay.h"
 #include "output_file.h"
+#include "palette.h"
 #include "plot.h"
 #include "png.h"
 #include "run.h"
@@ -19,8 +20,6 @@ namespace afford::render {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr Rgb kWhite{255, 255, 255}, kInk{40, 44, 52};
 
 // Pass 1: the box swept by the tool and the actee, the most lines of info
 // a frame needs at the frames' width, and every function inferred (the
@@ -69,12 +68,6 @@ Camera camera_for(const CompiledSession& session, const Eigen::AlignedBox3d& box
   c.up = session.camera.up;
   c.fov = session.camera.fov;
   return c;
-}
-
-std::string fmt(const char* f, double a) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, a);
-  return buf;
 }
 
 std::string shell_quote(const std::string& s) {
@@ -310,7 +303,7 @@ RenderSessionResult render_session(const CompiledSession& session, const RenderS
       // ffmpeg writes the temporary file beside it (its name has no
       // extension: -f mp4), renamed into place only when ffmpeg succeeded.
       OutputFile file(mp4);
-      const std::string cmd = "ffmpeg -y -loglevel error -framerate " + fmt("%g", o.fps) + " -i " +
+      const std::string cmd = "ffmpeg -y -loglevel error -framerate " + printf_number("%g", o.fps) + " -i " +
                               shell_quote((out / "frame_%05d.png").string()) +
                               " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -f mp4 " +
                               shell_quote(file.written_path()) + " </dev/null";

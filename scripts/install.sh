@@ -26,7 +26,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   apt-get install -y --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DAFFORD_WERROR=ON
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DAFFORD_WERROR=ON -DAFFORD_UNITY=ON
 cmake --build build
 # Install (default prefix /usr/local): the program, the libraries, the
 # shipped data and the Python package, where Debian's /usr/bin/python3

@@ -10,11 +10,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DAFFORD_WERROR=ON
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DAFFORD_WERROR=ON -DAFFORD_UNITY=ON
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs"
 
-sanitized=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DAFFORD_BENCH=OFF -DAFFORD_WERROR=ON)
+sanitized=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DAFFORD_BENCH=OFF -DAFFORD_WERROR=ON -DAFFORD_UNITY=ON)
 # libFuzzer comes with Debian's clang-14 (scripts/install.sh); without it
 # the same tree is built by the default compiler without the fuzzers,
 # saying so.

@@ -10,11 +10,11 @@
 #include "load.h"
 #include "model.h"
 #include "state.h"
+#include "test_util.h"
 
 namespace afford::test {
 
 inline constexpr double kThickness = 0.010;  // m, every arm of the inline tools
-inline constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 struct Tool {
   const char* name;

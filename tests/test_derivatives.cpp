@@ -6,11 +6,11 @@
 #include <random>
 
 #include "derivatives.h"
+#include "test_util.h"
 
 namespace afford::test {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 std::vector<double> times(int n, double dt) {
   std::vector<double> t(static_cast<size_t>(n));

@@ -16,11 +16,11 @@
 
 namespace afford {
 namespace {
+using test::kSource;
 
 using test::thrown;
 #define EXPECT_THROW_MSG(call, text) EXPECT_NE(thrown([&] { (void)(call); }).find(text), std::string::npos) << thrown([&] { (void)(call); })
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 ExploreFiles shipped(const std::string& object, std::vector<std::string> actees) {
   ExploreFiles f;
@@ -42,12 +42,6 @@ GridOptions small_grid() {
   return g;
 }
 
-int function_index(const GridInfo& g, const std::string& name) {
-  for (size_t f = 0; f < g.functions.size(); ++f) {
-    if (g.functions[f] == name) return static_cast<int>(f);
-  }
-  return -2;
-}
 
 TEST(Explore, TheHandPushesWithTheEffortAskedFor) {
   GridOptions grid = small_grid();
@@ -89,7 +83,7 @@ TEST(Explore, TheCrackingThresholdIsTheLeverWorkedOutByHand) {
     if (x.key.placement == 0 && x.key.thumb == 1) s = &x;
   }
   ASSERT_NE(s, nullptr);
-  const int crash = function_index(g, "crash");
+  const int crash = test::index_of(g.functions, "crash");
   const Threshold* to_crash = nullptr;
   for (const Threshold& t : s->thresholds) {
     if (t.to == crash) to_crash = &t;

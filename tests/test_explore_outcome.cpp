@@ -18,10 +18,10 @@
 
 namespace afford {
 namespace {
+using test::kSource;
 
 using ::testing::HasSubstr;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 // --- the order of strength, as data -------------------------------------
 
@@ -209,12 +209,6 @@ ExploreFiles tongs_with(const std::vector<std::string>& actees) {
   return f;
 }
 
-int function_index(const GridInfo& g, const std::string& name) {
-  for (size_t f = 0; f < g.functions.size(); ++f) {
-    if (g.functions[f] == name) return static_cast<int>(f);
-  }
-  return -2;
-}
 
 TEST(ExploreOutcome, ASpongeSqueezedPastItsLimitIsPinchedNotHeld) {
   GridOptions grid;
@@ -223,8 +217,8 @@ TEST(ExploreOutcome, ASpongeSqueezedPastItsLimitIsPinchedNotHeld) {
   grid.efforts = 2;
   grid.grasps = {"medium_wrap"};
   const Explorer e = make_explorer(tongs_with({"sponge.yaml"}), grid);
-  const int hold = function_index(e.grid, "hold"), pinch = function_index(e.grid, "pinch");
-  const int carry = function_index(e.grid, "carry");
+  const int hold = test::index_of(e.grid.functions, "hold"), pinch = test::index_of(e.grid.functions, "pinch");
+  const int carry = test::index_of(e.grid.functions, "carry");
   // 40 N at the thumb, 80 mm from the hinge: 3.2 N*m, less at most the
   // spring's 10.2 N * 40 mm = 0.41 N*m fully closed, over a jaw at most
   // 240 mm long: at least 2.79 / 0.24 = 11.6 N at the sponge, past its 8 N.
@@ -256,7 +250,7 @@ TEST(ExploreOutcome, NoSpongePointEndsInAHold) {
   Explorer e = make_explorer(tongs_with({"sponge.yaml"}), grid);
   fit_effort_axes(e, 2);
   const ExploreResult r = explore(e, Shard{}, 2);
-  const int hold = function_index(e.grid, "hold");
+  const int hold = test::index_of(e.grid.functions, "hold");
   for (const SeriesResult& s : r.series) {
     for (const PointResult& p : s.points) EXPECT_NE(p.outcome, hold);
     for (const Threshold& t : s.thresholds) EXPECT_NE(t.to, hold);
@@ -311,7 +305,7 @@ TEST(ExploreOutcome, TheEggsAxisEndsAboveItsCrackAndTheWrapsShareARow) {
   const SeriesResult& wrap = r.series.at(0);
   ASSERT_FALSE(wrap.thresholds.empty());
   const Threshold& last = wrap.thresholds.back();
-  EXPECT_EQ(last.to, function_index(g, "crash"));
+  EXPECT_EQ(last.to, test::index_of(g.functions, "crash"));
   EXPECT_GE(last.effort, needed);
   // The hand's push when the shell cracked (the effort asked for, which the
   // generated squeeze reaches only to within a newton or so).
@@ -353,7 +347,7 @@ TEST(ExploreOutcome, AGrapesAxisShowsItsBurstAndNothingWeakerSitsAboveAStronger)
   const SeriesResult& s = r.series.at(0);
   ASSERT_FALSE(s.thresholds.empty());
   const Threshold& burst = s.thresholds.back();
-  EXPECT_EQ(burst.to, function_index(g, "crash"));
+  EXPECT_EQ(burst.to, test::index_of(g.functions, "crash"));
   EXPECT_GE(burst.effort, needed);
   EXPECT_GE(burst.at.peak_effort, needed);
   EXPECT_LE(burst.at.peak_effort, needed + 3.55 + 0.04 + g.tolerance);
@@ -370,7 +364,7 @@ TEST(ExploreOutcome, AGrapesAxisShowsItsBurstAndNothingWeakerSitsAboveAStronger)
   for (size_t i = 1; i < s.points.size(); ++i) {
     EXPECT_GE(rank(s.points[i].outcome), rank(s.points[i - 1].outcome)) << "effort " << g.actees[0].efforts[i];
   }
-  EXPECT_EQ(s.points.back().outcome, function_index(g, "crash"));
+  EXPECT_EQ(s.points.back().outcome, test::index_of(g.functions, "crash"));
 }
 
 TEST(ExploreOutcome, TheAxesDoNotDependOnTheThreads) {

@@ -29,17 +29,8 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
-constexpr double kPi = 3.14159265358979323846;
 
 // A fresh folder for one test's files.
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("afford-gap-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 void write(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
 
 // What the hidden truth adds to the nutcracker's nominal torque, N*m.
@@ -79,7 +70,7 @@ std::string lever_trace(const Hidden& h, unsigned seed, double turned = 0) {
 }
 
 fs::path lever_measurement(const std::string& name, const Hidden& h) {
-  const fs::path dir = scratch(name);
+  const fs::path dir = test::fresh_dir("gap", name);
   write(dir / "a.csv", lever_trace(h, 1));
   write(dir / "b.csv", lever_trace(h, 2));
   write(dir / "m.yaml", "measurement: " + name + "\nobject: " + kSource +
@@ -89,7 +80,7 @@ fs::path lever_measurement(const std::string& name, const Hidden& h) {
 
 // Two traces, the second with the tool upside down (turned 180 deg).
 fs::path turned_measurement(const std::string& name, const Hidden& h) {
-  const fs::path dir = scratch(name);
+  const fs::path dir = test::fresh_dir("gap", name);
   write(dir / "a.csv", lever_trace(h, 1));
   write(dir / "b.csv", lever_trace(h, 2, kPi));
   write(dir / "m.yaml", "measurement: " + name + "\nobject: " + kSource +
@@ -360,7 +351,7 @@ TEST(GapPlots, TheCurvesAreTheReportedHeldOutResiduals) {
   EXPECT_EQ(residual.markers.size(), d.curves.size());  // where each judged block starts
   EXPECT_EQ(loop_chart(d).curves.size(), 3 * d.curves.size());
 
-  const fs::path dir = scratch("plots-out") / "plots";
+  const fs::path dir = test::fresh_dir("gap", "plots-out") / "plots";
   const std::vector<std::string> written = write_gap_plots(d, dir.string());
   EXPECT_EQ(written.size(), 4u);
   const render::Image png = render::read_png((dir / "loop.png").string());
@@ -405,7 +396,7 @@ TEST(Gap, APatchAdoptsTheEffectAndLeavesNoGap) {
 // ------------------------------------------------------------ bad files
 
 std::string measurement_error(const std::string& yaml, const std::string& csv = "") {
-  const fs::path dir = scratch("bad");
+  const fs::path dir = test::fresh_dir("gap", "bad");
   if (!csv.empty()) write(dir / "t.csv", csv);
   write(dir / "m.yaml", yaml);
   try {
@@ -512,7 +503,7 @@ TEST(Gap, ByForceTheContactAndTheBreakComeWhenMeasured) {
   // k*d*h/(h-d) along the arc where the jaw touches it (56.38 mm from the
   // hinge, test_util.h), broken at its 378 N. Replayed by force, the
   // nominal model touches and cracks it when the trace says, to a frame.
-  const fs::path dir = scratch("events");
+  const fs::path dir = test::fresh_dir("gap", "events");
   const Measurement probe = [&] {
     write(dir / "x.csv", good_csv());
     write(dir / "m.yaml", kHead + "actee: {file: " + kSource + "/actees/walnut.yaml, at: 60 mm}\n"
@@ -565,7 +556,7 @@ TEST(GapReplay, EachSampleIsWeighedByTheAnglesNoiseThroughTheModelsSlope) {
   // With 1e-4 rad of angle noise read at 160 mm, that is 0.5340 N through
   // the model against the effort sensor's 0.02 N: a weight of
   // 0.02^2 / (0.02^2 + 0.5340^2) = 1.401e-3.
-  const fs::path dir = scratch("weights");
+  const fs::path dir = test::fresh_dir("gap", "weights");
   write(dir / "x.csv", good_csv());
   write(dir / "m.yaml", kHead + "actee: {file: " + kSource + "/actees/walnut.yaml, at: 60 mm}\n"
                         "effort_at: 160 mm\ntrace: x.csv\n");
@@ -594,7 +585,7 @@ TEST(GapReplay, EachSampleIsWeighedByTheAnglesNoiseThroughTheModelsSlope) {
 // The nutcracker on the walnut at 60 mm, closed onto it and then held
 // 1 mm into its shell, the angle read with `angle_noise` rad of noise.
 std::vector<Replay> held_on_the_walnut(const std::string& name, double angle_noise, double* theta_c, double* x_noise) {
-  const fs::path dir = scratch(name);
+  const fs::path dir = test::fresh_dir("gap", name);
   write(dir / "x.csv", good_csv());
   write(dir / "m.yaml", kHead + "actee: {file: " + kSource + "/actees/walnut.yaml, at: 60 mm}\n"
                         "effort_at: 160 mm\ntrace: x.csv\n");
@@ -668,7 +659,7 @@ TEST(GapReplay, SqueezedAndAllButStillIsFittedWhereFrictionIsSmallAgainstItsNois
 // hazelnut's law is k r (d / r)^exponent h / (h - d), r its limit's
 // deflection 431 N / 270 N/mm: exponent 1 is its nominal law.
 fs::path squeezed_hazelnut(const std::string& name, double exponent) {
-  const fs::path dir = scratch(name);
+  const fs::path dir = test::fresh_dir("gap", name);
   write(dir / "x.csv", good_csv());
   const std::string head = kHead + "actee: {file: " + kSource + "/actees/hazelnut.yaml, at: 75 mm}\neffort_at: 160 mm\n";
   write(dir / "m.yaml", head + "trace: x.csv\n");
@@ -749,7 +740,7 @@ TEST(Gap, AProbeFindsTheLeverAndTheSpring) {
     std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f\n", t, theta, std::max(0.0, torque / b + (torque > 0 ? noise(random) : 0)));
     csv += row;
   }
-  const fs::path dir = scratch("probe");
+  const fs::path dir = test::fresh_dir("gap", "probe");
   write(dir / "p.csv", csv);
   write(dir / "m.yaml", kHead + "effort_at: 160 mm\ntrace: p.csv\n");
   const ProbeResult p = probe_lever(load_measurement((dir / "m.yaml").string()));
@@ -814,7 +805,7 @@ fs::path probe_measurement(const std::string& name, const std::vector<ProbeLeg>&
       csv += row;
     }
   }
-  const fs::path dir = scratch(name);
+  const fs::path dir = test::fresh_dir("gap", name);
   write(dir / "p.csv", csv);
   write(dir / "m.yaml", kHead + "effort_at: 160 mm\ntrace: p.csv\n");
   return dir / "m.yaml";
@@ -955,7 +946,7 @@ TEST(Gap, AProbeTellsThePreloadFromFrictionByMotionBothWays) {
 // the deflection to `most` (m), 0.5 N of noise. Returns the measurement.
 fs::path formula_nuts(const std::string& name, double exponent, const double (&scale)[3], const double (&zero)[3],
                       double most, unsigned seed) {
-  const fs::path dir = scratch(name);
+  const fs::path dir = test::fresh_dir("gap", name);
   std::mt19937 random(seed);
   std::normal_distribution<double> noise(0.0, 0.5);  // N
   for (int n = 0; n < 3; ++n) {

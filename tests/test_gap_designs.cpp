@@ -25,22 +25,13 @@
 #include "load.h"
 #include "report.h"
 #include "state.h"
+#include "test_util.h"
 
 namespace afford::test {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kSource = AFFORD_SOURCE_DIR;
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180;
 constexpr double kB = 0.160;  // m, where the effort is measured
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("afford-gapdesign-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // What the real tool has beyond its file, and how it is measured.
 struct Truth {
@@ -100,7 +91,7 @@ std::function<Motion(double)> sine(double low, double high, double period) {
 
 fs::path measurement(const std::string& name, const std::vector<std::pair<std::string, std::string>>& traces,
                      const std::string& extra_yaml = "") {
-  const fs::path dir = scratch(name);
+  const fs::path dir = test::fresh_dir("gapdesign", name);
   std::string list;
   for (const auto& [entry, csv] : traces) {
     const std::string file = entry.substr(0, entry.find(','));
@@ -134,7 +125,7 @@ TEST(GapDesigns, ASingleTraceThatCracksInTheFirstCycleNamesTheFriction) {
   // closing for four more cycles with nothing in its jaws. 0.3 N*m more
   // friction than the file's. No `broken` column: the load cell's drop
   // while the jaws still close marks the break.
-  const fs::path dir = scratch("crack");
+  const fs::path dir = test::fresh_dir("gapdesign", "crack");
   const std::string head = "measurement: crack\nobject: " + kSource + "/objects/nutcracker.yaml\nactee: {file: " +
                            kSource + "/actees/hazelnut.yaml, at: 75 mm}\neffort_at: 160 mm\n";
   std::ofstream(dir / "m.yaml") << head << "trace: x.csv\n";
@@ -459,7 +450,7 @@ struct Jaws {
 const std::string kHazelnutHead = "object: " + kSource + "/objects/nutcracker.yaml\nactee: {file: " + kSource +
                                   "/actees/hazelnut.yaml, at: 75 mm}\neffort_at: 160 mm\n";
 Jaws hazelnut_jaws() {
-  const fs::path dir = scratch("jaws");
+  const fs::path dir = test::fresh_dir("gapdesign", "jaws");
   std::string csv = "t,angle,effort_force\n";
   for (int i = 0; i < 60; ++i) csv += std::to_string(i * 1e-3) + ",0.5,0\n";
   std::ofstream(dir / "x.csv") << csv;
@@ -493,7 +484,7 @@ std::string squeeze_trace(const Truth& h, const Jaws& j, unsigned seed, double s
 }
 
 fs::path squeeze_measurement(const std::string& name, const std::vector<std::string>& csvs) {
-  const fs::path dir = scratch(name);
+  const fs::path dir = test::fresh_dir("gapdesign", name);
   std::string list;
   for (size_t i = 0; i < csvs.size(); ++i) {
     const std::string file = std::to_string(i) + ".csv";

@@ -24,7 +24,6 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 using Posture = std::array<std::array<double, kJoints>, kFingers>;
 
 // A small valid taxonomy; line numbers in the comments.

@@ -24,7 +24,6 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 // A small valid guide file; line numbers in the comments.
 const std::string kGuides =

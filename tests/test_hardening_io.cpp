@@ -26,12 +26,6 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-// The located message of the DataError a call throws.
-template <class F>
-std::string error_of(F&& f) {
-  return test::thrown<DataError>(f);
-}
-
 // A FIFO in the test's temporary folder, removed with this object.
 struct Fifo {
   Fifo() : path(testing::TempDir() + "afford_io_fifo_" + std::to_string(getpid())) {
@@ -44,9 +38,9 @@ struct Fifo {
 
 TEST(HardeningIo, ARecordingIsReadOnlyFromARegularFile) {
   const Fifo fifo;
-  EXPECT_THAT(error_of([&] { read_recording(fifo.path); }),
+  EXPECT_THAT(test::thrown<DataError>([&] { read_recording(fifo.path); }),
               HasSubstr(fifo.path + ": expected a regular file, found a FIFO"));
-  EXPECT_THAT(error_of([] { read_recording("/dev/zero"); }),
+  EXPECT_THAT(test::thrown<DataError>([] { read_recording("/dev/zero"); }),
               HasSubstr("/dev/zero: expected a regular file, found a device"));
 }
 
@@ -54,19 +48,19 @@ TEST(HardeningIo, ARecordingLargerThanTheCapIsRejectedBeforeReading) {
   const std::string path = testing::TempDir() + "afford_huge_" + std::to_string(getpid()) + ".afrec";
   write_file_checked(path, "");
   fs::resize_file(path, kMaxRecordingBytes + 1);  // sparse: nothing is written
-  EXPECT_THAT(error_of([&] { read_recording(path); }),
+  EXPECT_THAT(test::thrown<DataError>([&] { read_recording(path); }),
               HasSubstr(path + ": expected a file of at most 1073741824 bytes, found 1073741825 bytes"));
   std::remove(path.c_str());
 }
 
 TEST(HardeningIo, ATraceIsReadOnlyFromARegularFile) {
   const Fifo fifo;
-  EXPECT_THAT(error_of([&] { read_trace(fifo.path, default_format(Rig::lever), Rig::lever, 2); }),
+  EXPECT_THAT(test::thrown<DataError>([&] { read_trace(fifo.path, default_format(Rig::lever), Rig::lever, 2); }),
               HasSubstr(fifo.path + ": expected a regular file, found a FIFO"));
   // A missing trace is the measurement's mistake, at the key that names it.
   TableFormat f = default_format(Rig::lever);
   f.loc = SourceLoc{"m.yaml", 7, 5};
-  EXPECT_THAT(error_of([&] { read_trace("/nonexistent/t.csv", f, Rig::lever, 2); }),
+  EXPECT_THAT(test::thrown<DataError>([&] { read_trace("/nonexistent/t.csv", f, Rig::lever, 2); }),
               HasSubstr("m.yaml:7:5: expected a readable trace file '/nonexistent/t.csv', found none"));
 }
 

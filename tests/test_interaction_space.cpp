@@ -32,8 +32,6 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-constexpr double kDeg = std::numbers::pi / 180;
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path);

@@ -7,21 +7,19 @@
 
 #include "mjcf_scene.h"
 #include "session.h"
+#include "test_util.h"
+#include "test_sessions.h"
 
 namespace afford {
 namespace {
+using test::paper_nutcracker;
+using test::kSource;
+using test::kDeg;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
-constexpr double kDeg = 3.14159265358979323846 / 180;
-
-const CompiledSession& nutcracker() {
-  static const CompiledSession s = load_session(kSource + "/sessions/paper-nutcracker.yaml");
-  return s;
-}
 
 // objects/nutcracker.yaml: S_k 2000 N/m at S_p 10 mm, preload 1.5 N, rest 30 deg.
 TEST(Mjcf, HingeSpringOfTheNutcracker) {
-  const HingeSpring s = hinge_spring(nutcracker().model);
+  const HingeSpring s = hinge_spring(paper_nutcracker().model);
   EXPECT_NEAR(s.stiffness, 2000 * 0.01 * 0.01, 1e-12);               // 0.2 N*m/rad
   EXPECT_NEAR(s.springref, 30 * kDeg + 1.5 / (2000 * 0.01), 1e-12);  // 0.5986 rad
 }
@@ -31,7 +29,7 @@ TEST(Mjcf, HingeSpringOfTheNutcracker) {
 // rules/grasps.yaml, so the agent's 400 N holds); the squeeze of 45 mm
 // at 2.9 s commands rest - 0.045 / 0.16 rad.
 TEST(Mjcf, HandServoOfTheNutcracker) {
-  const HandServo h = hand_servo(nutcracker());
+  const HandServo h = hand_servo(paper_nutcracker());
   ASSERT_TRUE(h.present);
   EXPECT_NEAR(h.lever_arm, 0.16, 1e-12);
   EXPECT_NEAR(h.kp, 5000 * 0.16 * 0.16, 1e-9);  // 128 N*m/rad
@@ -62,7 +60,7 @@ TEST(Mjcf, NoHandServoWhenTheScriptNeverHoldsTheTool) {
 
 // The walnut: 250 N/mm, 9 g; two contacts of 500 N/mm in series.
 TEST(Mjcf, ActeeContactOfTheWalnut) {
-  const Model& m = nutcracker().model;
+  const Model& m = paper_nutcracker().model;
   const ActeeContact c = actee_contact(m);
   EXPECT_EQ(c.impedance, 0.99);
   EXPECT_NEAR(c.stiffness, 2 * 250000 * (1 - 0.99) / 0.009, 1e-6);  // 5.56e5 1/s^2
@@ -71,7 +69,7 @@ TEST(Mjcf, ActeeContactOfTheWalnut) {
 }
 
 TEST(Mjcf, SceneTextOfTheNutcracker) {
-  const std::string xml = mjcf_scene(nutcracker());
+  const std::string xml = mjcf_scene(paper_nutcracker());
   for (const char* want :
        {"<option timestep=\"0.000125\" gravity=\"0 0 0\"", "range=\"0 0.523598776\"", "stiffness=\"0.2\"",
         "springref=\"0.598598776\"", "frictionloss=\"0.01\" damping=\"0\" armature=\"0\"", "gainprm=\"128\"",
@@ -86,7 +84,7 @@ TEST(Mjcf, SceneTextOfTheNutcracker) {
   // An XML comment may not hold "--": the header stays a comment.
   const size_t end = xml.find("-->");
   EXPECT_EQ(xml.substr(4, end - 4).find("--"), std::string::npos);
-  EXPECT_EQ(xml, mjcf_scene(nutcracker()));  // deterministic
+  EXPECT_EQ(xml, mjcf_scene(paper_nutcracker()));  // deterministic
 }
 
 }  // namespace

@@ -35,8 +35,6 @@ using Eigen::Vector3d;
 using modelling::LeverGeometry;
 using modelling::ToolModel;
 
-constexpr double kDeg = std::numbers::pi / 180;
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 // A folder of the temporary directory, removed afterwards.
 class TempDir {

@@ -29,12 +29,13 @@
 
 namespace afford {
 namespace {
+using test::paper_nutcracker;
+using test::kSource;
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -178,13 +179,8 @@ TEST(Outputs, ADamagedManifestIsALocatedError) {
 
 // ------------------------------------------------------------ recordings
 
-const CompiledSession& nutcracker() {
-  static const CompiledSession s = load_session(kSource + "/sessions/paper-nutcracker.yaml");
-  return s;
-}
-
 std::int64_t record(const std::string& file, std::uint64_t max_bytes, std::string* error) {
-  const CompiledSession& s = nutcracker();
+  const CompiledSession& s = paper_nutcracker();
   Recorder recorder(file, s, "script", 0, max_bytes);
   ScriptedAgent agent(s.script);
   Observer* const observers[] = {&recorder};
@@ -225,7 +221,7 @@ TEST(Outputs, ASessionTooLongToRecordIsRefusedBeforeItStarts) {
   TempDir dir;
   // 6 million frames (600 s at 0.1 ms, say) of at least 371 bytes: over 2 GiB.
   const std::string file = dir.at("long.afrec");
-  EXPECT_THAT(test::thrown<std::runtime_error>([&] { Recorder(file, nutcracker(), "script", 6000000); }),
+  EXPECT_THAT(test::thrown<std::runtime_error>([&] { Recorder(file, paper_nutcracker(), "script", 6000000); }),
               HasSubstr(file + ": cannot record 6000000 frames of 1 ms: at least 212"));
   EXPECT_FALSE(fs::exists(file));
 }
@@ -238,7 +234,7 @@ TEST(Outputs, ARecordingReplacesAnEarlierOneButNotAForeignFile) {
   record(dir.at("cp.afrec"), kMaxRecordingBytes, &error);
   EXPECT_EQ(error, "");
   user_writes(dir.at("notes.afrec"), "not a recording");
-  EXPECT_THAT(refused([&] { Recorder(dir.at("notes.afrec"), nutcracker(), "script"); }),
+  EXPECT_THAT(refused([&] { Recorder(dir.at("notes.afrec"), paper_nutcracker(), "script"); }),
               HasSubstr("exists and afford did not write it"));
   EXPECT_EQ(slurp(dir.at("notes.afrec")), "not a recording");
 }

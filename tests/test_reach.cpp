@@ -19,13 +19,14 @@
 
 namespace afford {
 namespace {
+using test::kSource;
+using test::kSessionName;
+using test::kDeg;
 
 using ::testing::HasSubstr;
 using test::replace_once;
 using test::thrown;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
-constexpr double kDeg = std::numbers::pi / 180;
 constexpr double kMm = 1e-3;
 
 // Joint order [distal, proximal, metacarpal], as in the agent file.
@@ -144,11 +145,10 @@ TEST(Reach, TheChainStopsAtItsReach) {
 
 // ------------------------------------------------------------ sessions
 
-const std::string& kName = test::kSessionName;
 const std::string& kSession = test::kNutcrackerSession;  // lines 1 to 14
 
 std::string session_error(const std::string& yaml) {
-  return thrown<DataError>([&] { (void)read_session(load_yaml_string(yaml, kName)); });
+  return thrown<DataError>([&] { (void)read_session(load_yaml_string(yaml, kSessionName)); });
 }
 
 TEST(ReachSession, TheShippedPlacementIsWithinReach) {
@@ -207,7 +207,7 @@ TEST(ReachSession, AnAgentWithoutChainsIsNotLimited) {
     }
     return indented;
   }()), "[80 mm, 40 mm, 190 mm]", "[2000 mm, 0 mm, 0 mm]");
-  const CompiledSession s = read_session(load_yaml_string(yaml, kName));
+  const CompiledSession s = read_session(load_yaml_string(yaml, kSessionName));
   EXPECT_FALSE(s.model.has_reach);
 }
 
@@ -218,7 +218,7 @@ TEST(ReachSession, AnAgentWithoutChainsIsNotLimited) {
 // the index asked at the wrist itself is 9.41 mm inside its nearest reach
 // and stops 9.41 mm out along +x (no line to follow from the wrist).
 TEST(ReachFrame, ATipBeyondReachStopsThereAndSaysHowFar) {
-  const CompiledSession s = read_session(load_yaml_string(kSession, kName));
+  const CompiledSession s = read_session(load_yaml_string(kSession, kSessionName));
   auto state = make_state(s.model);
   Sample sample;
   sample.t = s.model.timestep;
@@ -243,7 +243,7 @@ TEST(ReachFrame, ATipBeyondReachStopsThereAndSaysHowFar) {
 // The hand, 2 m away, driven frame by frame as a device would: its
 // fingertips stop at their reach, nowhere near the tool, and nothing grasps.
 TEST(ReachFrame, AHandTwoMetresAwayCannotGrasp) {
-  const CompiledSession s = read_session(load_yaml_string(kSession, kName));
+  const CompiledSession s = read_session(load_yaml_string(kSession, kSessionName));
   auto state = make_state(s.model);
   Sample sample;
   sample.hand = Eigen::Isometry3d::Identity();

@@ -30,7 +30,6 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -32,22 +32,18 @@
 namespace afford {
 using test::state_at;
 namespace {
+using test::paper_nutcracker;
+using test::kSource;
 
 namespace fs = std::filesystem;
 using render::Image;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 const std::string kReferences = kSource + "/tests/data/render/";
-
-const CompiledSession& nutcracker() {
-  static const CompiledSession s = load_session(kSource + "/sessions/paper-nutcracker.yaml");
-  return s;
-}
 
 // One camera for every test scene: the tool and the walnut at rest.
 render::Camera test_camera(double aspect) {
-  const std::unique_ptr<State> rest = make_state(nutcracker().model);
-  return render::frame_scene(nutcracker().model, render::scene_box(nutcracker().model, *rest), aspect);
+  const std::unique_ptr<State> rest = make_state(paper_nutcracker().model);
+  return render::frame_scene(paper_nutcracker().model, render::scene_box(paper_nutcracker().model, *rest), aspect);
 }
 
 render::RenderOptions small() {
@@ -59,8 +55,8 @@ render::RenderOptions small() {
 }
 
 Image render_at(render::Renderer& r, double t) {
-  const std::unique_ptr<State> s = state_at(nutcracker(), t);
-  return r.render(nutcracker().model, *s, test_camera(160.0 / 120), small());
+  const std::unique_ptr<State> s = state_at(paper_nutcracker(), t);
+  return r.render(paper_nutcracker().model, *s, test_camera(160.0 / 120), small());
 }
 
 struct Difference {
@@ -245,12 +241,12 @@ TEST(RenderScene, IdenticalInputGivesIdenticalPixels) {
   EXPECT_EQ(render::encode_png(first), render::encode_png(other));
   // A renderer keeps its last backdrop while the camera and the ground stay;
   // another camera gets its own, as a fresh renderer draws it.
-  const std::unique_ptr<State> s = state_at(nutcracker(), 2.0);
+  const std::unique_ptr<State> s = state_at(paper_nutcracker(), 2.0);
   render::Camera moved = test_camera(160.0 / 120);
   moved.position += Eigen::Vector3d(0.03, 0.0, 0.05);
   render::Renderer fresh;
-  const Image seen = a.render(nutcracker().model, *s, moved, small());
-  EXPECT_EQ(render::encode_png(seen), render::encode_png(fresh.render(nutcracker().model, *s, moved, small())));
+  const Image seen = a.render(paper_nutcracker().model, *s, moved, small());
+  EXPECT_EQ(render::encode_png(seen), render::encode_png(fresh.render(paper_nutcracker().model, *s, moved, small())));
   EXPECT_NE(render::encode_png(seen), render::encode_png(first));
 }
 
@@ -289,9 +285,9 @@ TEST(RenderScene, NutcrackerBrokenWalnutMatchesItsReference) {
 TEST(RenderScene, ActeeIsAtItsProjectedCentre) {
   render::Renderer r;
   for (double t : {0.4, 2.0}) {
-    const std::unique_ptr<State> s = state_at(nutcracker(), t);
+    const std::unique_ptr<State> s = state_at(paper_nutcracker(), t);
     const render::Camera cam = test_camera(160.0 / 120);
-    const Image img = r.render(nutcracker().model, *s, cam, small());
+    const Image img = r.render(paper_nutcracker().model, *s, cam, small());
     const Eigen::Vector2d p = render::project(cam, 160, 120, s->actee_pose.translation());
     const render::Rgb c = img.at(static_cast<int>(p.x()), static_cast<int>(p.y()));
     EXPECT_GT(c.r, c.g) << "t = " << t;
@@ -307,9 +303,9 @@ TEST(RenderScene, ActeeIsAtItsProjectedCentre) {
 }
 
 TEST(RenderScene, FramedSceneFitsTheTool) {
-  const std::unique_ptr<State> s = make_state(nutcracker().model);
-  const Eigen::AlignedBox3d box = render::scene_box(nutcracker().model, *s);
-  const render::Camera cam = render::frame_scene(nutcracker().model, box, 4.0 / 3);
+  const std::unique_ptr<State> s = make_state(paper_nutcracker().model);
+  const Eigen::AlignedBox3d box = render::scene_box(paper_nutcracker().model, *s);
+  const render::Camera cam = render::frame_scene(paper_nutcracker().model, box, 4.0 / 3);
   for (int i = 0; i < 8; ++i) {
     const Eigen::Vector2d p = render::project(cam, 640, 480, box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(i)));
     EXPECT_GE(p.x(), 0);
@@ -323,7 +319,7 @@ TEST(RenderScene, FramedSceneFitsTheTool) {
 // segments in their colours, the symmetry plane tinting the view with its
 // colour.
 TEST(RenderScene, GuidesAppearWhereTheyMust) {
-  const CompiledSession& s = nutcracker();
+  const CompiledSession& s = paper_nutcracker();
   const Guides guides = compute_guides(s.model, load_guides(kSource + "/rules/guides.yaml"));
   const std::unique_ptr<State> state = state_at(s, 0.4);
   const render::Camera cam = test_camera(4.0 / 3);
@@ -370,7 +366,7 @@ TEST(RenderScene, GuidesAppearWhereTheyMust) {
 // ---------------------------------------------------------------- plot, sheet, camera
 
 TEST(RenderPlot, SvgHasAxesCurvesLegendAndInferences) {
-  const CompiledSession& s = nutcracker();
+  const CompiledSession& s = paper_nutcracker();
   render::TimelineRecorder rec(s.name);
   Observer* const obs[] = {&rec};
   ScriptedAgent agent(s.script);
@@ -399,7 +395,7 @@ TEST(RenderSession, ContactSheetHasTheKeyMoments) {
   o.width = 320;
   o.height = 240;
   o.supersample = 1;
-  const render::RenderSessionResult r = render::render_session(nutcracker(), o);
+  const render::RenderSessionResult r = render::render_session(paper_nutcracker(), o);
   std::string all;
   for (const render::KeyMoment& k : r.moments) all += k.what + "\n";
   for (const char* what : {"start", "pinch inferred", "hold inferred", "crash inferred", "walnut broke",

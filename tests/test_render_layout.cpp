@@ -19,13 +19,14 @@
 #include "session.h"
 #include "session_render.h"
 #include "text_fit.h"
+#include "test_util.h"
 
 namespace afford {
 namespace {
+using test::kSource;
 
 using render::PixelBox;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 const CompiledSession& session(const std::string& name) {
   static std::map<std::string, CompiledSession> loaded;

@@ -20,9 +20,9 @@
 namespace afford {
 using test::state_at;
 namespace {
+using test::kSource;
 
 namespace fs = std::filesystem;
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 const char* kActee = R"(actee: bead
 description: a test bead

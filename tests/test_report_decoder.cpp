@@ -15,10 +15,10 @@
 
 namespace afford {
 namespace {
+using test::kDeg;
 
 using ::testing::HasSubstr;
 
-constexpr double kDeg = std::numbers::pi / 180;
 
 Model hand_model() { return compile_agent_only(load_agent(AFFORD_SOURCE_DIR "/agents/hand.yaml")); }
 
@@ -43,9 +43,9 @@ out_report:
     - {finger: index, offset: 3, width: 1, counts_per_newton: 10, saturation: 30 N}
 )";
 
-DeviceDescription small() { return read_device_description(load_yaml_string(kSmall, "small.yaml")); }
+DeviceDescription small_device() { return read_device_description(load_yaml_string(kSmall, "small.yaml")); }
 
-std::string error_of(const std::string& text) {
+std::string decoder_error(const std::string& text) {
   try {
     read_device_description(load_yaml_string(text, "dev.yaml"));
   } catch (const DataError& e) {
@@ -75,7 +75,7 @@ TEST(DeviceDescription, ShippedGloveAndForceFeedbackLoad) {
 }
 
 TEST(DeviceDescription, ReadsEveryField) {
-  const DeviceDescription d = small();
+  const DeviceDescription d = small_device();
   EXPECT_EQ(d.vendor, 0x1234);
   EXPECT_EQ(d.product, 0x5678);
   EXPECT_EQ(d.in_endpoint, 0x81);
@@ -89,48 +89,48 @@ TEST(DeviceDescription, ReadsEveryField) {
 }
 
 TEST(DeviceDescription, UnknownJointSaysDidYouMean) {
-  const std::string e = error_of(test::replace_once(kSmall, "to: thumb.distal", "to: thumb.distl"));
+  const std::string e = decoder_error(test::replace_once(kSmall, "to: thumb.distal", "to: thumb.distl"));
   EXPECT_THAT(e, HasSubstr("dev.yaml:10:"));
   EXPECT_THAT(e, HasSubstr("found 'thumb.distl' (did you mean 'thumb.distal'?)"));
 }
 
 TEST(DeviceDescription, OverlappingFieldsAreAnError) {
-  const std::string e = error_of(test::replace_once(kSmall, "{name: mcp, offset: 3", "{name: mcp, offset: 2"));
+  const std::string e = decoder_error(test::replace_once(kSmall, "{name: mcp, offset: 3", "{name: mcp, offset: 2"));
   EXPECT_THAT(e, HasSubstr("dev.yaml:11:"));
   EXPECT_THAT(e, HasSubstr("found byte 2, already used by field 'ip'"));
 }
 
 TEST(DeviceDescription, FieldOnTheReportIdIsAnError) {
-  const std::string e = error_of(test::replace_once(kSmall, "{name: ip, offset: 1", "{name: ip, offset: 0"));
+  const std::string e = decoder_error(test::replace_once(kSmall, "{name: ip, offset: 1", "{name: ip, offset: 0"));
   EXPECT_THAT(e, HasSubstr("already used by the report id"));
 }
 
 TEST(DeviceDescription, FieldBeyondTheReportIsAnError) {
-  const std::string e = error_of(test::replace_once(kSmall, "{name: x, offset: 5", "{name: x, offset: 9"));
+  const std::string e = decoder_error(test::replace_once(kSmall, "{name: x, offset: 5", "{name: x, offset: 9"));
   EXPECT_THAT(e, HasSubstr("dev.yaml:12:"));
   EXPECT_THAT(e, HasSubstr("within the report's 12 bytes"));
 }
 
 TEST(DeviceDescription, UnitDimensionMustFitTheTarget) {
-  const std::string e = error_of(test::replace_once(kSmall, "scale: 0.01, unit: mm, to: hand.x", "scale: 0.01, unit: deg, to: hand.x"));
+  const std::string e = decoder_error(test::replace_once(kSmall, "scale: 0.01, unit: mm, to: hand.x", "scale: 0.01, unit: deg, to: hand.x"));
   EXPECT_THAT(e, HasSubstr("dev.yaml:12:"));
   EXPECT_THAT(e, HasSubstr("expected a channel whose unit is a length"));
 }
 
 TEST(DeviceDescription, BadWidthEndianUnitKeyAndTransfer) {
-  EXPECT_THAT(error_of(test::replace_once(kSmall, "offset: 9, width: 1", "offset: 9, width: 3")),
+  EXPECT_THAT(decoder_error(test::replace_once(kSmall, "offset: 9, width: 1", "offset: 9, width: 3")),
               HasSubstr("a width of 1, 2 or 4 bytes"));
-  EXPECT_THAT(error_of(test::replace_once(kSmall, "endian: big", "endian: bgi")), HasSubstr("(did you mean 'big'?)"));
-  EXPECT_THAT(error_of(test::replace_once(kSmall, "unit: mm", "unit: furlong")), HasSubstr("expected a unit"));
-  EXPECT_THAT(error_of(test::replace_once(kSmall, "value_offset: -45", "valu_offset: -45")),
+  EXPECT_THAT(decoder_error(test::replace_once(kSmall, "endian: big", "endian: bgi")), HasSubstr("(did you mean 'big'?)"));
+  EXPECT_THAT(decoder_error(test::replace_once(kSmall, "unit: mm", "unit: furlong")), HasSubstr("expected a unit"));
+  EXPECT_THAT(decoder_error(test::replace_once(kSmall, "value_offset: -45", "valu_offset: -45")),
               HasSubstr("(did you mean 'value_offset'?)"));
-  EXPECT_THAT(error_of(test::replace_once(kSmall, "transfer: interrupt", "transfer: isochronous")),
+  EXPECT_THAT(decoder_error(test::replace_once(kSmall, "transfer: interrupt", "transfer: isochronous")),
               HasSubstr("expected one of interrupt, bulk"));
-  EXPECT_THAT(error_of(test::replace_once(kSmall, "finger: index", "finger: indx")),
+  EXPECT_THAT(decoder_error(test::replace_once(kSmall, "finger: index", "finger: indx")),
               HasSubstr("(did you mean 'index'?)"));
-  EXPECT_THAT(error_of(test::replace_once(kSmall, "in_endpoint: 0x81", "in_endpoint: 0x01")),
+  EXPECT_THAT(decoder_error(test::replace_once(kSmall, "in_endpoint: 0x81", "in_endpoint: 0x01")),
               HasSubstr("dev.yaml:3:"));
-  EXPECT_THAT(error_of(test::replace_once(kSmall, "to: index.metacarpal", "to: thumb.distal")),
+  EXPECT_THAT(decoder_error(test::replace_once(kSmall, "to: index.metacarpal", "to: thumb.distal")),
               HasSubstr("filled by 'ip'"));
 }
 
@@ -145,7 +145,7 @@ std::vector<std::uint8_t> small_report(int ip_centideg, int mcp_count, int x_hun
 }
 
 TEST(ReportDecoder, DecodesEndiannessSignScaleAndOffset) {
-  const DeviceDescription d = small();
+  const DeviceDescription d = small_device();
   const Model m = hand_model();
   ReportDecoder dec(d, m);
   Sample s;
@@ -175,7 +175,7 @@ TEST(ReportDecoder, RawIntegers) {
 }
 
 TEST(ReportDecoder, ShortWrongIdAndOutOfRangeAreCountedAndSkipped) {
-  const DeviceDescription d = small();
+  const DeviceDescription d = small_device();
   const Model m = hand_model();
   ReportDecoder dec(d, m);
   Sample s;
@@ -244,7 +244,7 @@ TEST(ReportDecoder, GloveFingertipsFollowTheChain) {
 }
 
 TEST(ReportEncoder, ForcesToCountsClampedAndSaturated) {
-  const DeviceDescription d = small();
+  const DeviceDescription d = small_device();
   std::array<std::uint8_t, 8> out{};
   encode_forces(d, {12.345, 100.0, 0, 0, 0}, out);
   EXPECT_EQ(out[0], 9);

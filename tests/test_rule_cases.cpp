@@ -9,6 +9,7 @@
 
 #include "rule_tests.h"
 #include "scripted_agent.h"
+#include "test_util.h"
 
 namespace afford::test {
 namespace {
@@ -17,14 +18,13 @@ using ::testing::HasSubstr;
 using ::testing::IsEmpty;
 using ::testing::StartsWith;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 // Case documents are named as if they sat in tests/rules/, so that their
 // relative paths reach the shipped files.
-const std::string kName = kSource + "/tests/rules/case.yaml";
+const std::string kCaseFile = kSource + "/tests/rules/case.yaml";
 
 std::string at(int line, int column) { return "case.yaml:" + std::to_string(line) + ":" + std::to_string(column) + ": "; }
 
-RuleCase case_from(const std::string& yaml) { return read_rule_case(load_yaml_string(yaml, kName)); }
+RuleCase case_from(const std::string& yaml) { return read_rule_case(load_yaml_string(yaml, kCaseFile)); }
 
 // The DataError's text: from reading the case, or else from loading its files.
 std::string case_error(const std::string& yaml) {

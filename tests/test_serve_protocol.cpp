@@ -20,15 +20,16 @@
 #include "scene_message.h"
 #include "session.h"
 #include "trial.h"
+#include "test_util.h"
 
 namespace afford::serve {
 namespace {
+using test::kSource;
 
 using ::testing::HasSubstr;
 using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 const std::vector<std::string> kShelf = {"egg", "walnut"};
 
 CommandLimits limits() {
@@ -222,13 +223,6 @@ Command command(CommandKind kind, double squeeze = 0) {
   return c;
 }
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("afford-serve-test-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 // The paper's Fig. 17 as a page would drive it: grasp, squeeze, hold,
 // carry, squeeze harder.
 void plan_tongs(Plan& plan, const PageStart& start) {
@@ -252,7 +246,7 @@ TEST(ServePageAgent, DrivesThePaperTongsToEveryFunction) {
   EXPECT_EQ(grip.posture, "medium_wrap");
   EXPECT_NEAR(grip.thumb_distance, 0.130, 1e-9);
   const PageStart start = page_start(session);
-  const fs::path dir = scratch("agent");
+  const fs::path dir = test::fresh_dir("serve-test", "agent");
   const CompiledSession trial = write_trial_session(session, "", dir, "p-trial-001");
   Plan plan(trial.model, grip, start, 7.0);
   plan_tongs(plan, start);
@@ -315,7 +309,7 @@ TEST(ServeTrial, NamesAndNumbers) {
   EXPECT_FALSE(valid_participant("../x"));
   EXPECT_FALSE(valid_participant(std::string(33, 'a')));
   EXPECT_EQ(trial_stem("p01", 7), "p01-trial-007");
-  const fs::path dir = scratch("numbers");
+  const fs::path dir = test::fresh_dir("serve-test", "numbers");
   EXPECT_EQ(next_trial(dir / "missing", "p01"), 1);
   EXPECT_EQ(next_trial(dir, "p01"), 1);
   std::ofstream(dir / "p01-trial-004.afrec") << "x";
@@ -333,7 +327,7 @@ TEST(ServeTrial, TakesAnActeeFromTheShelfWhereItFits) {
   EXPECT_THAT(all, ::testing::Contains("walnut"));
   EXPECT_TRUE(std::is_sorted(all.begin(), all.end()));
   const CompiledSession session = load_session(kSource + "/sessions/paper-tongs.yaml");
-  const fs::path dir = scratch("shelf");
+  const fs::path dir = test::fresh_dir("serve-test", "shelf");
   for (const ShelfActee& a : shelf) {
     const CompiledSession t = write_trial_session(session, a.file, dir, "p-trial-" + a.name);
     EXPECT_TRUE(t.model.has_actee) << a.name;
@@ -352,7 +346,7 @@ TEST(ServeTrial, TakesAnActeeFromTheShelfWhereItFits) {
 // Every shipped session can be served: its grip (from its script, or the
 // middle of the emphasis region), its start, its trial file.
 TEST(ServeTrial, EveryShippedSessionCanBeServed) {
-  const fs::path dir = scratch("shipped");
+  const fs::path dir = test::fresh_dir("serve-test", "shipped");
   int sessions = 0;
   for (const fs::directory_entry& e : fs::directory_iterator(kSource + "/sessions")) {
     if (e.path().extension() != ".yaml") continue;
@@ -409,7 +403,7 @@ TEST(ServeProtocol, EventsCarryTheExplanation) {
   const CompiledSession session = load_session(kSource + "/sessions/paper-tongs.yaml");
   const PageGrip grip = page_grip(session);
   const PageStart start = page_start(session);
-  const fs::path dir = scratch("events");
+  const fs::path dir = test::fresh_dir("serve-test", "events");
   const CompiledSession trial = write_trial_session(session, "", dir, "p-trial-001");
   Plan plan(trial.model, grip, start, 7.0);
   plan_tongs(plan, start);
@@ -452,7 +446,7 @@ TEST(ServeEventRing, WritesOutWhatTheFrameSaw) {
   const CompiledSession session = load_session(kSource + "/sessions/paper-tongs.yaml");
   const PageGrip grip = page_grip(session);
   const PageStart start = page_start(session);
-  const fs::path dir = scratch("ring");
+  const fs::path dir = test::fresh_dir("serve-test", "ring");
   const CompiledSession trial = write_trial_session(session, "", dir, "p-trial-001");
   Plan plan(trial.model, grip, start, 7.0);
   plan_tongs(plan, start);

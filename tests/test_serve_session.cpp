@@ -24,16 +24,17 @@
 #include "recording_source.h"
 #include "run.h"
 #include "server.h"
+#include "test_util.h"
 
 namespace afford::serve {
 namespace {
+using test::kSource;
 
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 constexpr double kPatience = 120;  // s: how long a wait for another thread may take before the test fails
 
 // Waits until `done` holds (polling); false after kPatience seconds.
@@ -117,7 +118,7 @@ class Page {
   std::vector<Json> messages_;
 };
 
-fs::path scratch(const std::string& name) {
+fs::path absent_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("afford-serve-session-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   return dir;
@@ -163,7 +164,7 @@ RunResult replayed(const std::string& file) {
 }
 
 TEST(ServeSession, DrivesThePaperTongsOverAWebSocket) {
-  const fs::path out = scratch("tongs");
+  const fs::path out = absent_dir("tongs");
   Server server(options(out));
   server.start();
   ASSERT_GT(server.port(), 0);
@@ -249,7 +250,7 @@ TEST(ServeSession, DrivesThePaperTongsOverAWebSocket) {
 }
 
 TEST(ServeSession, ThePageThatDrivesLeavesMidSession) {
-  const fs::path out = scratch("leaves");
+  const fs::path out = absent_dir("leaves");
   Server server(options(out));
   server.start();
   auto driver = std::make_unique<Page>(server.port());
@@ -282,7 +283,7 @@ TEST(ServeSession, ThePageThatDrivesLeavesMidSession) {
 // Server::close_pages). The bound is ten times what it takes, and far
 // below the 2 s it took before; the time is printed.
 TEST(ServeSession, StopsPromptlyWithPagesConnected) {
-  const fs::path out = scratch("stop");
+  const fs::path out = absent_dir("stop");
   ServeOptions o = options(out);
   o.realtime = true;
   Server server(o);
@@ -300,7 +301,7 @@ TEST(ServeSession, StopsPromptlyWithPagesConnected) {
 }
 
 TEST(ServeSession, BadMessagesAreLoggedAndDropped) {
-  const fs::path out = scratch("bad");
+  const fs::path out = absent_dir("bad");
   Server server(options(out));
   server.start();
   Page page(server.port());
@@ -342,7 +343,7 @@ TEST(ServeSession, BadMessagesAreLoggedAndDropped) {
 }
 
 TEST(ServeSession, TakesAnActeeFromTheShelf) {
-  const fs::path out = scratch("shelf");
+  const fs::path out = absent_dir("shelf");
   Server server(options(out));
   server.start();
   Page page(server.port());
@@ -384,7 +385,7 @@ std::string thrown(F make) {
 // trial with one of them replays, and a mistake in the folder stops the
 // start, located.
 TEST(ServeSession, TheShelfHoldsTheUsersActees) {
-  const fs::path out = scratch("user-actees");
+  const fs::path out = absent_dir("user-actees");
   const fs::path mine = out / "my-actees";
   fs::create_directories(mine);
   {
@@ -436,7 +437,7 @@ TEST(ServeSession, TheShelfHoldsTheUsersActees) {
 // The scene holds `afford guide`'s guides of the tool: the same guides,
 // primitives and numbers as compute_guides, which `afford guide` prints.
 TEST(ServeSession, TheSceneHoldsTheGuides) {
-  const fs::path out = scratch("guides");
+  const fs::path out = absent_dir("guides");
   Server server(options(out));
   server.start();
   Page page(server.port());
@@ -479,7 +480,7 @@ TEST(ServeSession, TheSceneHoldsTheGuides) {
 }
 
 TEST(ServeSession, RefusesWhatCannotServe) {
-  const fs::path out = scratch("refuse");
+  const fs::path out = absent_dir("refuse");
   ServeOptions bad_web = options(out);
   bad_web.web_dir = (out / "nowhere").string();
   Server a(bad_web);
@@ -509,7 +510,7 @@ TEST(ServeSession, RefusesWhatCannotServe) {
 // reports the frames that missed their deadline (AFFORD_SERVE_MEASURE_S
 // seconds, default 2). Asserts only that the session ran its frames.
 TEST(ServeSession, RealTimeWithTwoWatchersReportsDeadlineMisses) {
-  const fs::path out = scratch("realtime");
+  const fs::path out = absent_dir("realtime");
   ServeOptions o = options(out);
   o.realtime = true;
   o.duration = 2;

@@ -16,22 +16,16 @@
 #include "scripted_agent.h"
 #include "session.h"
 #include "viewer.h"
+#include "test_util.h"
 
 namespace afford::serve {
 namespace {
+using test::kSource;
 
 using ::testing::HasSubstr;
 using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("afford-serve-view-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // The paper-tongs script, recorded as `afford run --record` does.
 RunResult record_paper_tongs(const std::string& file) {
@@ -57,7 +51,7 @@ std::string throws(const std::function<void()>& f) {
 }
 
 TEST(ServeView, ARecordingBecomesTheScenesStatesAndEvents) {
-  const fs::path dir = scratch("doc");
+  const fs::path dir = test::fresh_dir("serve-view", "doc");
   const std::string file = (dir / "run.afrec").string();
   const RunResult run = record_paper_tongs(file);
   ASSERT_EQ(run.inferences.size(), 4u);
@@ -95,7 +89,7 @@ TEST(ServeView, ARecordingBecomesTheScenesStatesAndEvents) {
 }
 
 TEST(ServeView, FindsTheRecordingAPathStandsFor) {
-  const fs::path dir = scratch("find");
+  const fs::path dir = test::fresh_dir("serve-view", "find");
   const fs::path one = dir / "run";
   fs::create_directories(one);
   std::ofstream(one / "run.afrec") << "x";
@@ -135,7 +129,7 @@ std::string http_get(int port, const std::string& path, int* status) {
 }
 
 TEST(ServeView, ServesThePageAndTheRecording) {
-  const fs::path dir = scratch("http");
+  const fs::path dir = test::fresh_dir("serve-view", "http");
   const std::string file = (dir / "run.afrec").string();
   record_paper_tongs(file);
   ViewOptions o;

@@ -21,6 +21,7 @@
 #include "terms.h"
 #include "test_sessions.h"
 #include "trace.h"
+#include "test_util.h"
 
 namespace afford::test {
 namespace {
@@ -28,8 +29,6 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
-const std::string& kName = kSessionName;
 
 // ------------------------------------------------------------ helpers
 
@@ -52,7 +51,7 @@ std::string with_line(int line, const std::string& text) {
   return out;
 }
 
-CompiledSession session_from(const std::string& yaml) { return read_session(load_yaml_string(yaml, kName)); }
+CompiledSession session_from(const std::string& yaml) { return read_session(load_yaml_string(yaml, kSessionName)); }
 
 std::string session_error(const std::string& yaml) {
   try {
@@ -431,7 +430,7 @@ TEST(Session, ReadsEveryFileAndDefaults) {
   EXPECT_EQ(s.model.contact_tolerance, 5e-4);
   EXPECT_TRUE(s.model.has_actee);
   ASSERT_EQ(s.files.size(), 6u);
-  EXPECT_EQ(s.files[0], kName);
+  EXPECT_EQ(s.files[0], kSessionName);
   EXPECT_EQ(s.files[1], kSource + "/objects/nutcracker.yaml");
   EXPECT_EQ(s.files[5], kSource + "/rules/grasps.yaml");
   EXPECT_EQ(s.script.duration(), 1.0);

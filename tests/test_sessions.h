@@ -35,6 +35,12 @@ inline std::string nutcracker_session(const std::string& actee, const std::strin
          keyframes;
 }
 
+// sessions/paper-nutcracker.yaml, loaded once for the tests that only read it.
+inline const CompiledSession& paper_nutcracker() {
+  static const CompiledSession s = load_session(std::string(AFFORD_SOURCE_DIR) + "/sessions/paper-nutcracker.yaml");
+  return s;
+}
+
 inline const std::string kWalnutAt60 = "actee: {file: ../actees/walnut.yaml, at: 60 mm}\n";
 
 // A walnut at 60 mm, squeezed 10 mm by 1 s (lines 13 and 14).

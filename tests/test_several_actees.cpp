@@ -14,14 +14,13 @@
 #include "session.h"
 #include "test_sessions.h"
 #include "trace.h"
+#include "test_util.h"
 
 namespace afford::test {
 namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
-const std::string& kName = kSessionName;
 
 // Each break: which actee, when, and the load it broke at.
 struct Breaks : Observer {
@@ -73,7 +72,7 @@ const std::string kTwo =
 
 std::string error_of(const std::string& yaml) {
   try {
-    (void)read_session(load_yaml_string(yaml, kName));
+    (void)read_session(load_yaml_string(yaml, kSessionName));
   } catch (const DataError& e) {
     return e.what();
   }
@@ -101,7 +100,7 @@ TEST(SeveralActees, TheNextGoesOnTheToolWhereTheToolIsNow) {
                          "    hand: {position: [80 mm, 40 mm, 240 mm]}\n"
                          "  - after: 0.5 s\n"
                          "    actee: nut\n"),
-      kName));
+      kSessionName));
   const double placed_z = s.actee_models[1].actee_start.translation().z();
   Where where;
   Observer* const observers[] = {&where};
@@ -178,7 +177,7 @@ TEST(SeveralActees, TheTimelineSaysWhenAFingerIsStoppedAtItsReach) {
                    "  - t: 1 s\n    fingertips: {thumb: [60 mm, 30 mm, -30 mm], index: [70 mm, 10 mm, -30 mm], middle: "
                    "[72 mm, -8 mm, -30 mm], ring: [68 mm, -25 mm, -28 mm], little: [60 mm, -40 mm, -25 mm]}\n"
                    "  - t: 2 s\n  - t: 3 s\n"),
-      kName));
+      kSessionName));
   s.script.keyframes[2].fingertip[0] = Eigen::Vector3d(0.4, 0, 0);  // 400 mm from the wrist
   const std::string timeline = timeline_of(s);
   EXPECT_THAT(timeline, HasSubstr("\"event\":\"out_of_reach\",\"finger\":\"thumb\",\"short_m\":"));

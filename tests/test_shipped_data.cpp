@@ -9,11 +9,12 @@
 #include "derive.h"
 #include "load.h"
 #include "model.h"
+#include "test_util.h"
 
 namespace afford {
 namespace {
+using test::kSource;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 // One compression test: load (N) against plate displacement (m).
 struct Curve {

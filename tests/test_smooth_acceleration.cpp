@@ -9,11 +9,11 @@
 
 #include "derivatives.h"
 #include "smooth_acceleration.h"
+#include "test_util.h"
 
 namespace afford::test {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 double norm(const std::vector<double>& w) {
   double s = 0;

@@ -69,11 +69,10 @@ TEST(SqueezeUntil, AnActeeForceWorkedByHand) {
 // The nutcracker with a walnut at 60 mm, gripped from the start, then
 // `keyframes` (test_sessions.h: from line 13).
 std::string session_yaml(const std::string& keyframes) { return nutcracker_session(kWalnutAt60, keyframes); }
-const std::string& kName = kSessionName;
 
 std::string error_of(const std::string& keyframes) {
   try {
-    (void)read_session(load_yaml_string(session_yaml(keyframes), kName));
+    (void)read_session(load_yaml_string(session_yaml(keyframes), kSessionName));
   } catch (const DataError& e) {
     return e.what();
   }
@@ -93,7 +92,7 @@ struct Last : Observer {
 };
 
 Last run(const std::string& keyframes) {
-  const CompiledSession s = read_session(load_yaml_string(session_yaml(keyframes), kName));
+  const CompiledSession s = read_session(load_yaml_string(session_yaml(keyframes), kSessionName));
   Last last;
   Observer* const observers[] = {&last};
   ScriptedAgent agent(s.script);

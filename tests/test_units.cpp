@@ -11,6 +11,7 @@
 #include <string>
 
 #include "units.h"
+#include "test_util.h"
 
 namespace afford {
 
@@ -19,10 +20,10 @@ namespace afford {
 [[maybe_unused]] static void PrintTo(const Dimension& d, std::ostream* os) { *os << d.str(); }
 
 namespace {
+using test::kDeg;
 
 using ::testing::HasSubstr;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // The quantity `text` parses to; fails the test when it does not parse.
 Quantity quantity(const std::string& text) {

@@ -5,9 +5,19 @@
 
 #include <cmath>
 #include <exception>
+#include <filesystem>
+#include <numbers>
 #include <string>
+#include <unistd.h>
+#include <vector>
 
 namespace afford::test {
+
+inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kDeg = std::numbers::pi / 180;  // rad per degree
+#ifdef AFFORD_SOURCE_DIR
+inline const std::string kSource = AFFORD_SOURCE_DIR;  // the source tree: the shipped files
+#endif
 
 // The message of the E a call throws, or "" when it throws none (another
 // exception than E passes through and fails the test).
@@ -19,6 +29,25 @@ std::string thrown(F&& f) {
     return e.what();
   }
   return "";
+}
+
+// A fresh, empty folder in the system's temporary one, named for the test
+// (`kind`, `name`) and this process, so that tests running at once never share it.
+inline std::filesystem::path fresh_dir(const std::string& kind, const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("afford-" + kind + "-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// The index of `name` in `names`; -2 when it is not there (a grid's cells
+// hold -1 for "no function").
+inline int index_of(const std::vector<std::string>& names, const std::string& name) {
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == name) return static_cast<int>(i);
+  }
+  return -2;
 }
 
 // `text` with its one occurrence of `from` replaced by `to`. A `from` that

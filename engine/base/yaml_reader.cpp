@@ -194,6 +194,13 @@ Node Node::operator[](size_t i) const { return Node(node_[i], file_); }
 
 Node Node::child(const YAML::Node& node) const { return Node(node, file_); }
 
+Node key_node(const Node& map, std::string_view key) {
+  for (auto it = map.yaml().begin(); it != map.yaml().end(); ++it) {
+    if (it->first.Scalar() == key) return map.child(it->first);
+  }
+  return map;
+}
+
 std::string Node::found() const {
   switch (node_.Type()) {
     case YAML::NodeType::Map: return "a mapping";

@@ -43,6 +43,11 @@ class Node {
   std::shared_ptr<const std::string> file_;
 };
 
+// The node of `key` itself in a mapping, for errors about the key (a
+// missing file, two keys that exclude each other); the mapping when the key
+// is absent.
+Node key_node(const Node& map, std::string_view key);
+
 // Limits on a YAML file (documented in the folder READMEs): its size, how
 // many values it holds and how deeply they nest. One document per file.
 inline constexpr size_t kMaxYamlBytes = size_t{1} << 20;

@@ -306,7 +306,7 @@ namespace {
 constexpr double kTinyGap = 1e-9;
 // Contacts this close in depth, m, count as one face: their points are averaged.
 constexpr double kSameDepth = 1e-9;
-constexpr std::size_t kMaxContacts = 4;  // box-box faces give four corners
+constexpr std::size_t kMaxFclContacts = 4;  // box-box faces give four corners
 
 // A box and a rounded shape (ellipsoid, capsule, cylinder), decided without
 // GJK where one of the box's faces or edges settles it. A flat jaw on a nut
@@ -461,7 +461,7 @@ struct ContactQuery::Impl {
   // penetration (MPR) gives sane normals and depths; FCL's own GJK/EPA
   // ("indep") returned negative depths and wrong normals for convex pairs
   // in 0.7.
-  fcl::CollisionRequestd collision_request{kMaxContacts, true};
+  fcl::CollisionRequestd collision_request{kMaxFclContacts, true};
   fcl::CollisionResultd collision_result;
   // A sphere's centre as a shape of its own, for FCL's closed forms and GJK.
   fcl::Sphered point{0.0};
@@ -471,7 +471,7 @@ struct ContactQuery::Impl {
 
   Impl() {
     // The contacts vector is private: fill and clear it once to keep capacity.
-    for (std::size_t i = 0; i < 2 * kMaxContacts; ++i) collision_result.addContact({});
+    for (std::size_t i = 0; i < 2 * kMaxFclContacts; ++i) collision_result.addContact({});
     collision_result.clear();
   }
 

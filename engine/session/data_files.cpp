@@ -9,12 +9,6 @@ namespace afford {
 
 namespace fs = std::filesystem;
 
-Node key_node(const Node& map, std::string_view key) {
-  for (auto it = map.yaml().begin(); it != map.yaml().end(); ++it) {
-    if (it->first.Scalar() == key) return map.child(it->first);
-  }
-  return map;
-}
 
 Files::Files(const Node& root, std::string kind, std::vector<std::string>* read)
     : kind_(std::move(kind)), read_(read) {

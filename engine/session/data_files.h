@@ -15,9 +15,6 @@
 
 namespace afford {
 
-// The node of `key` itself in a mapping (errors about the key: a missing file).
-Node key_node(const Node& map, std::string_view key);
-
 class Files {
  public:
   // Paths resolve against the folder of root's file, a `kind` file

@@ -67,13 +67,6 @@ const MapSchema& rejected_function_schema() {
   return kRejected;
 }
 
-// The node of `key` itself in a mapping (a missing file is reported there).
-Node key_node(const Node& map, std::string_view key) {
-  for (auto it = map.yaml().begin(); it != map.yaml().end(); ++it) {
-    if (it->first.Scalar() == key) return map.child(it->first);
-  }
-  return map;
-}
 
 std::string window_text(const TimeWindow& w) {
   return "[" + format_quantity(w.from, dim::time) + ", " + format_quantity(w.to, dim::time) + "]";

@@ -27,13 +27,6 @@ namespace {
 
 constexpr double kMinGripDistance = 1e-3;  // m: closer to the fulcrum a thumb cannot turn the lever
 
-// The key node of `key` in a mapping, for errors about the key itself.
-Node key_node(const Node& map, std::string_view key) {
-  for (auto it = map.yaml().begin(); it != map.yaml().end(); ++it) {
-    if (it->first.Scalar() == key) return map.child(it->first);
-  }
-  return map;
-}
 
 const MapSchema& squeeze_until_schema() {
   using namespace schema;

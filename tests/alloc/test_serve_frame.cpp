@@ -19,12 +19,13 @@
 
 #include "alloc_counter.h"
 #include "server.h"
+#include "../test_util.h"
 
 namespace afford::serve {
 namespace {
+using test::kSource;
 
 namespace fs = std::filesystem;
-const std::string kSource = AFFORD_SOURCE_DIR;
 constexpr double kPatience = 120;  // s: the longest wait for another thread
 
 // Watches the frame thread: the allocations between one frame's end and

@@ -26,13 +26,14 @@
 #include "png.h"
 #include "server.h"
 #include "viewer.h"
+#include "../test_util.h"
 
 namespace afford::browser {
 namespace {
+using test::kSource;
 
 namespace fs = std::filesystem;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 constexpr int kWidth = 1100, kHeight = 700;  // CSS pixels
 constexpr double kPatience = 60;             // s: the longest wait for the page before the test fails
 

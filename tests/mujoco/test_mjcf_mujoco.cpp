@@ -19,13 +19,14 @@
 #include "session.h"
 #include "stages.h"
 #include "terms.h"
+#include "../test_util.h"
 
 namespace afford {
 namespace {
+using test::kSource;
 
 namespace fs = std::filesystem;
 
-const std::string kSource = AFFORD_SOURCE_DIR;
 
 // A tool with a part of every shape, turned in the world, gravity on, a
 // convex actee.

@@ -21,15 +21,16 @@
 #include "session.h"
 #include "usb_device.h"
 #include "usb_live.h"
+#include "../test_util.h"
 
 namespace afford {
 namespace {
+using test::kDeg;
 
 using ::testing::HasSubstr;
 using test::FakeUsbDevice;
 using namespace std::chrono_literals;
 
-constexpr double kDeg = std::numbers::pi / 180;
 
 Model hand_model() { return compile_agent_only(load_agent(AFFORD_SOURCE_DIR "/agents/hand.yaml")); }
 
