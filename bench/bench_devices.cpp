@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "alloc_counter.h"
+#include "bench_source.h"
 #include "load.h"
 #include "report_decoder.h"
 #include "resample.h"
 #include "usb_device.h"
-#include "bench_source.h"
 
 namespace afford {
 namespace {

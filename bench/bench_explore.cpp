@@ -7,10 +7,10 @@
 
 #include <cmath>
 
+#include "bench_source.h"
 #include "explore.h"
 #include "parallel.h"
 #include "results.h"
-#include "bench_source.h"
 
 namespace afford {
 namespace {

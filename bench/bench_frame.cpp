@@ -4,11 +4,11 @@
 #include <benchmark/benchmark.h>
 
 #include "alloc_counter.h"
+#include "bench_source.h"
 #include "rules.h"
 #include "scripted_agent.h"
 #include "session.h"
 #include "state.h"
-#include "bench_source.h"
 
 namespace afford {
 namespace {

@@ -16,9 +16,9 @@
 #include <random>
 #include <unistd.h>
 
+#include "bench_source.h"
 #include "diagnose.h"
 #include "state.h"
-#include "bench_source.h"
 
 namespace afford {
 namespace {

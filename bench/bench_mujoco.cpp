@@ -16,9 +16,9 @@
 #include <cstdint>
 #include <string>
 
+#include "bench_source.h"
 #include "mujoco_harness.h"
 #include "session.h"
-#include "bench_source.h"
 
 namespace afford {
 namespace {

@@ -3,11 +3,11 @@
 #include <benchmark/benchmark.h>
 
 #include "alloc_counter.h"
+#include "bench_source.h"
 #include "observer.h"
 #include "run.h"
 #include "scripted_agent.h"
 #include "session.h"
-#include "bench_source.h"
 
 namespace afford {
 namespace {

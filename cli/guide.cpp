@@ -14,20 +14,17 @@
 #include "commands.h"
 #include "data_dir.h"
 #include "explore_json.h"
-#include "reports.h"
-#include "option_checks.h"
 #include "guides.h"
 #include "json_output.h"
 #include "lever.h"
 #include "load.h"
 #include "model.h"
+#include "option_checks.h"
+#include "quantity_text.h"
+#include "reports.h"
 
 namespace afford::cli {
 namespace {
-
-std::string qv(const Eigen::Vector3d& v, const Dimension& d) {
-  return "[" + format_quantity(v.x(), d) + ", " + format_quantity(v.y(), d) + ", " + format_quantity(v.z(), d) + "]";
-}
 
 std::string plain(double v) {
   char buf[32];
@@ -127,10 +124,10 @@ void print_text(const Guides& g, const std::string& guides_file, const std::stri
     std::cout << s.name << " (" << guide_kind_name(s.kind) << "): " << s.description << "\n";
     switch (s.kind) {
       case GuideKind::symmetry_plane:
-        std::cout << "  plane of symmetry through " << qv(f.symmetry_point, dim::length) << ", normal ["
+        std::cout << "  plane of symmetry through " << format_vector(f.symmetry_point, dim::length) << ", normal ["
                   << plain(f.symmetry_normal.x()) << ", " << plain(f.symmetry_normal.y()) << ", "
                   << plain(f.symmetry_normal.z()) << "] (object frame)\n";
-        std::cout << "  functional pose: object frame at " << qv(f.functional_pose.translation(), dim::length)
+        std::cout << "  functional pose: object frame at " << format_vector(f.functional_pose.translation(), dim::length)
                   << " in the world, " << rotation_text(f.functional_pose.linear()) << "\n";
         std::cout << "  at the functional pose the plane is " << format_quantity(f.plane_to_gravity, dim::angle)
                   << " from gravity ("
@@ -174,7 +171,7 @@ void print_text(const Guides& g, const std::string& guides_file, const std::stri
         for (const GuideRect& r : g.rects) {
           if (r.guide != static_cast<int>(i)) continue;
           std::cout << "    " << (r.frame == Arm::fixed ? "fixed arm " : "moving arm") << " face at "
-                    << qv(r.centre, dim::length) << ", facing [" << plain(r.normal.x()) << ", "
+                    << format_vector(r.centre, dim::length) << ", facing [" << plain(r.normal.x()) << ", "
                     << plain(r.normal.y()) << ", " << plain(r.normal.z()) << "], " << format_quantity(2 * r.half_u, dim::length)
                     << " by " << format_quantity(2 * r.half_v, dim::length) << "\n";
         }

@@ -261,7 +261,7 @@ void read_kinematics(const Node& node, DeviceDescription& d) {
     std::optional<Node> fn = m.optional(kFingerNames[f]);
     if (!fn) continue;
     MapReader fm(*fn, std::string("the chain of the ") + kFingerNames[f], chain_schema());
-    FingerChain& c = d.kinematics[f];
+    DeviceFingerChain& c = d.kinematics[f];
     c.present = true;
     c.base = read_vector(fm.required("base"), dim::length);
     const Node segs = fm.required("segments");

@@ -85,7 +85,7 @@ struct Actuator {
 // Planar finger chains: a finger starts at `base` (hand frame) pointing
 // along +x; its metacarpal, proximal and distal segments (in that order)
 // bend about the hand's y axis toward -z (the palm) by the joint angles.
-struct FingerChain {
+struct DeviceFingerChain {
   bool present = false;
   Eigen::Vector3d base = Eigen::Vector3d::Zero();  // m, hand frame
   std::array<double, kJoints> segment{};           // m, indexed like joints: distal, proximal, metacarpal
@@ -110,7 +110,7 @@ struct DeviceDescription {
   int in_report_id = -1; // -1: none; else byte 0
   std::vector<Field> fields;
 
-  std::array<FingerChain, kFingers> kinematics{};
+  std::array<DeviceFingerChain, kFingers> kinematics{};
 
   bool has_out = false;
   int out_size = 0;

@@ -93,7 +93,7 @@ ReportStatus ReportDecoder::decode(std::span<const std::uint8_t> report, double 
                            .toRotationMatrix();
   for (int fi = 0; fi < kFingers; ++fi) {
     Eigen::Vector3d p = tip[fi];
-    const FingerChain& c = device_.kinematics[fi];
+    const DeviceFingerChain& c = device_.kinematics[fi];
     if (!device_.tip_mapped[fi] && c.present) {
       // Planar chain from the base: metacarpal, proximal, distal segments,
       // each bent by the sum of the flexions so far about the hand's y axis

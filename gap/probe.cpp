@@ -19,7 +19,7 @@ namespace afford {
 namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180;
-constexpr double kWindow = 0.01;      // s either side of a sample: its rate, and whether the arm is still
+constexpr double kProbeWindow = 0.01;      // s either side of a sample: its rate, and whether the arm is still
 constexpr double kStillNoise = 8;     // still: the angle's range over the window within this many of its noise
 constexpr double kUntouched = 4;      // untouched: the effort within this many of its noise of 0
 constexpr double kStopNoise = 5;      // against a stop: the effort this many of its noise past friction's band
@@ -62,7 +62,7 @@ Look look_at(const Trace& tr) {
   const size_t n = tr.size();
   k.angle_noise = noise_of(a, tr.resolution[static_cast<size_t>(Signal::angle)]);
   k.effort_noise = noise_of(tr[Signal::effort_force], tr.resolution[static_cast<size_t>(Signal::effort_force)]);
-  k.omega_noise = std::sqrt(2.0) * k.angle_noise / (2 * kWindow);
+  k.omega_noise = std::sqrt(2.0) * k.angle_noise / (2 * kProbeWindow);
   k.omega.resize(n);
   k.still.resize(n);
   // The window's largest and smallest angle, kept as it slides (deques of
@@ -70,13 +70,13 @@ Look look_at(const Trace& tr) {
   std::deque<size_t> hi, lo;
   size_t first = 0, next = 0;
   for (size_t i = 0; i < n; ++i) {
-    for (; next < n && t[next] <= t[i] + kWindow; ++next) {
+    for (; next < n && t[next] <= t[i] + kProbeWindow; ++next) {
       while (!hi.empty() && a[hi.back()] <= a[next]) hi.pop_back();
       while (!lo.empty() && a[lo.back()] >= a[next]) lo.pop_back();
       hi.push_back(next);
       lo.push_back(next);
     }
-    while (t[first] < t[i] - kWindow) ++first;
+    while (t[first] < t[i] - kProbeWindow) ++first;
     while (hi.front() < first) hi.pop_front();
     while (lo.front() < first) lo.pop_front();
     const size_t last = next - 1;

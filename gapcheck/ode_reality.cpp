@@ -60,9 +60,9 @@ double step_for(const Case& c, const Drive& drive) {
 // the specimen's penalty spring at its depth, and beside it the
 // viscoelastic share, a Maxwell element the harness applies along the
 // contact's normal. Its force is read from the joints' feedback.
-class ActeeContact {
+class OdeActeeContact {
  public:
-  ActeeContact(const Case& c, bool real, double step) : c_(c), real_(real), h_(step), law_(ode::contact_law(c)) {}
+  OdeActeeContact(const Case& c, bool real, double step) : c_(c), real_(real), h_(step), law_(ode::contact_law(c)) {}
 
   // Before a step: collides the body's box with the actee and adds the
   // contact joints to `group`, and the Maxwell element's force to `body`.
@@ -163,7 +163,7 @@ std::vector<Measured> OdeReality::play(const Case& c, const Drive& drive, unsign
   ode::ToolScene scene(c, drive, h);
   const double preload = tool.preload_torque + truth.preload;  // N*m
   const double b = tool.effort_at;
-  ActeeContact contact(c, true, h);
+  OdeActeeContact contact(c, true, h);
 
   double spring_angle = 0;  // rad, the spring's end behind the backlash
   bool broken = false;
@@ -236,7 +236,7 @@ PlatesLaw OdeReality::plates(const Case& c) const {
   const double radius = 0.5 * a.thickness;
   ode::PlatesScene scene(radius, kPlatesGap);
   const double h = kStep;
-  ActeeContact contact(c, kPlatesTestTheRealSpecimen, h);
+  OdeActeeContact contact(c, kPlatesTestTheRealSpecimen, h);
   dJointSetSliderParam(scene.slider, dParamVel, -kPlatesSpeed);
   dJointSetSliderParam(scene.slider, dParamFMax, 1e7);
   const double touch = radius;  // y of the actee's top: the plate's face there is zero deflection

@@ -18,15 +18,15 @@ std::string num(double x, int digits = 6) {
   return buf;
 }
 
-std::string mm(double m) { return num(m * 1e3) + " mm"; }
-std::string deg(double rad) { return num(rad * 180 / std::numbers::pi) + " deg"; }
-std::string mm3(const Eigen::Vector3d& v) { return "[" + mm(v.x()) + ", " + mm(v.y()) + ", " + mm(v.z()) + "]"; }
+std::string in_mm(double m) { return num(m * 1e3) + " mm"; }
+std::string in_deg(double rad) { return num(rad * 180 / std::numbers::pi) + " deg"; }
+std::string mm3(const Eigen::Vector3d& v) { return "[" + in_mm(v.x()) + ", " + in_mm(v.y()) + ", " + in_mm(v.z()) + "]"; }
 std::string mm_list(const std::vector<double>& m) {
   std::string out = "[";
-  for (size_t i = 0; i < m.size(); ++i) out += (i > 0 ? ", " : "") + mm(m[i]);
+  for (size_t i = 0; i < m.size(); ++i) out += (i > 0 ? ", " : "") + in_mm(m[i]);
   return out + "]";
 }
-std::string range(const RangeSpec& r) { return "{from: " + mm(r.from) + ", to: " + mm(r.to) + "}"; }
+std::string range(const RangeSpec& r) { return "{from: " + in_mm(r.from) + ", to: " + in_mm(r.to) + "}"; }
 
 std::string found(bool from_shape) { return from_shape ? "from the gap between the parts" : "as given"; }
 
@@ -43,10 +43,10 @@ std::string object_yaml(const ToolModel& m) {
       << "# Jaws (application) " << found(l.application_found) << "; handle (emphasis) " << found(l.emphasis_found)
       << ".\n"
       << "# Parts: convex hulls of the collision elements (long concave ones cut in slabs).\n"
-      << "# Interaction space (L_is): the shape's jaws fully open are " << mm(m.jaws.gap_from()) << " to "
-      << mm(m.jaws.gap_to()) << " apart (interaction_space, below;\n"
+      << "# Interaction space (L_is): the shape's jaws fully open are " << in_mm(m.jaws.gap_from()) << " to "
+      << in_mm(m.jaws.gap_to()) << " apart (interaction_space, below;\n"
       << "# afford model reports the gap at each opening); the wedge |r| sin theta_max would be "
-      << mm(m.jaws.wedge_from) << " to " << mm(m.jaws.wedge_to) << ".\n";
+      << in_mm(m.jaws.wedge_from) << " to " << in_mm(m.jaws.wedge_to) << ".\n";
   if (!m.spring) {
     out << "# No spring: a URDF or a mesh has none. Add it with afford model ... --spring K_N_M_PER_RAD,REST_DEG,\n"
         << "# or write a guess and fit it to a probing trace with afford gap --probe (gap/README.md).\n";
@@ -60,8 +60,8 @@ std::string object_yaml(const ToolModel& m) {
       << "# held 100 mm above the table as the shipped tools are.\n"
       << "functional_pose:\n"
       << "  position: [0 mm, 0 mm, 100 mm]\n"
-      << "  rotation: [" << deg(m.pose_rotation.x()) << ", " << deg(m.pose_rotation.y()) << ", "
-      << deg(m.pose_rotation.z()) << "]\n"
+      << "  rotation: [" << in_deg(m.pose_rotation.x()) << ", " << in_deg(m.pose_rotation.y()) << ", "
+      << in_deg(m.pose_rotation.z()) << "]\n"
       << "symmetry_plane:   # the reflection lies " << num(m.plane.score * 1e3, 3) << " mm RMS from the surface"
       << (m.symmetry.planes.empty() ? " (no plane within the tolerance: the nearest)" : "") << "\n"
       << "  point: " << mm3(m.plane.point) << "\n"
@@ -70,11 +70,11 @@ std::string object_yaml(const ToolModel& m) {
       << "lever:\n"
       << "  pattern: " << pattern_name(l.pattern) << "\n"
       << "  arm: " << range(l.arm) << "\n"
-      << "  theta_min: " << deg(l.theta_min) << "\n"
-      << "  theta_max: " << deg(l.theta_max) << "\n";
+      << "  theta_min: " << in_deg(l.theta_min) << "\n"
+      << "  theta_max: " << in_deg(l.theta_max) << "\n";
   // A rest on a limit is that limit's very text (the loader compares them).
   out << "  rest: "
-      << (m.rest == l.theta_max ? deg(l.theta_max) : m.rest == l.theta_min ? deg(l.theta_min) : deg(m.rest)) << "\n";
+      << (m.rest == l.theta_max ? in_deg(l.theta_max) : m.rest == l.theta_min ? in_deg(l.theta_min) : in_deg(m.rest)) << "\n";
   if (m.spring) {
     out << "spring:\n"
         << "  constant: " << num(m.spring->constant, 9) << " N/m\n"

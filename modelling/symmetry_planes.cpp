@@ -13,9 +13,9 @@ namespace {
 
 using Eigen::Vector3d;
 
-constexpr int kCoarseSamples = 300;    // to pick candidates among many directions
-constexpr int kFineSamples = 1500;     // to refine and to score
-constexpr double kEqualMoments = 1e-2;  // relative: moments this close may share a plane of axes: search it
+constexpr int kCoarsePlaneSamples = 300;    // to pick candidates among many directions
+constexpr int kFinePlaneSamples = 1500;     // to refine and to score
+constexpr double kEqualPlaneMoments = 1e-2;  // relative: moments this close may share a plane of axes: search it
 constexpr double kSameNormal = 1e-4;    // rad: two planes closer than this are one
 
 class Scorer {
@@ -86,7 +86,7 @@ Candidates candidate_normals(const MassProperties& p) {
   Candidates c;
   c.axis = eig.eigenvectors();
   const double scale = moment.cwiseAbs().maxCoeff();
-  auto equal = [&](int i, int j) { return std::abs(moment[i] - moment[j]) <= kEqualMoments * scale; };
+  auto equal = [&](int i, int j) { return std::abs(moment[i] - moment[j]) <= kEqualPlaneMoments * scale; };
   if (equal(0, 1) && equal(1, 2)) {
     c.ball = true;
     constexpr int kCount = 600;  // Fibonacci points on the upper half sphere, about 6 deg apart
@@ -114,7 +114,7 @@ Candidates candidate_normals(const MassProperties& p) {
 Symmetry symmetry_planes(const TriangleMesh& mesh, const MassProperties& p, double tolerance) {
   const double diagonal = (box_max(mesh) - box_min(mesh)).norm();
   const Candidates c = candidate_normals(p);
-  const Scorer fine(mesh, p.centroid, kFineSamples);
+  const Scorer fine(mesh, p.centroid, kFinePlaneSamples);
   Symmetry out;
   out.tolerance = tolerance;
   out.best.score = std::numeric_limits<double>::infinity();
@@ -144,7 +144,7 @@ Symmetry symmetry_planes(const TriangleMesh& mesh, const MassProperties& p, doub
   if (c.spread.empty()) {
     for (int k = 0; k < 3; ++k) add(c.axis.col(k), refine_principal);
   } else {
-    const Scorer coarse(mesh, p.centroid, kCoarseSamples);
+    const Scorer coarse(mesh, p.centroid, kCoarsePlaneSamples);
     std::vector<std::pair<double, Vector3d>> scored;
     int within = 0;
     for (const Vector3d& n : c.spread) {

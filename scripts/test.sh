@@ -21,7 +21,7 @@ sanitized=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DAFFORD_BENCH=OFF -DAFFORD_WERROR=
 if command -v clang++-14 >/dev/null && echo 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }' |
      clang++-14 -x c++ -fsanitize=fuzzer -o /dev/null - 2>/dev/null; then
   export CC=clang-14 CXX=clang++-14
-  sanitized+=(-DAFFORD_FUZZ=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only -DNDEBUG")
+  sanitized+=(-DAFFORD_FUZZ=ON -DFUZZ_SECONDS=5 "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only -DNDEBUG")
 else
   echo "test.sh: fuzzers SKIPPED: clang++-14 with libFuzzer not found (scripts/install.sh installs it)" >&2
   sanitized+=(-DAFFORD_SANITIZE=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")

@@ -14,9 +14,13 @@
 
 #include "errors.h"
 #include "geometry.h"
+#include "shape_specs.h"
 
 namespace afford {
 namespace {
+using test::box;
+using test::ellipsoid;
+using test::at;
 
 using Eigen::Isometry3d;
 using Eigen::Vector3d;
@@ -33,12 +37,6 @@ ShapeSpec sphere(double r) {
   s.radius = r;
   return s;
 }
-ShapeSpec box(double x, double y, double z) {
-  ShapeSpec s;
-  s.kind = ShapeKind::box;
-  s.size = {x, y, z};
-  return s;
-}
 ShapeSpec capsule(double r, double length) {
   ShapeSpec s;
   s.kind = ShapeKind::capsule;
@@ -51,25 +49,12 @@ ShapeSpec cylinder(double r, double length) {
   s.kind = ShapeKind::cylinder;
   return s;
 }
-ShapeSpec ellipsoid(double a, double b, double c) {
-  ShapeSpec s;
-  s.kind = ShapeKind::ellipsoid;
-  s.radii = {a, b, c};
-  return s;
-}
 ShapeSpec convex(std::vector<Vector3d> points) {
   ShapeSpec s;
   s.kind = ShapeKind::convex;
   s.vertices = std::move(points);
   s.loc = {"x.yaml", 3, 7};
   return s;
-}
-
-Isometry3d at(double x, double y, double z, double turn_z = 0) {
-  Isometry3d p = Isometry3d::Identity();
-  p.linear() = Eigen::AngleAxisd(turn_z, Vector3d::UnitZ()).toRotationMatrix();
-  p.translation() = Vector3d(x, y, z);
-  return p;
 }
 
 std::vector<Vector3d> cube_corners(double half) {

@@ -15,27 +15,19 @@
 #include "gjk.h"
 #include "stages.h"
 #include "test_util.h"
+#include "shape_specs.h"
 
 namespace afford {
 namespace {
+using test::box;
+using test::ellipsoid;
+using test::at;
 
 using Eigen::Isometry3d;
 using Eigen::Vector3d;
 
-constexpr double kExact = 1e-12;
+constexpr double kGjkExact = 1e-12;
 
-ShapeSpec box(double x, double y, double z) {
-  ShapeSpec s;
-  s.kind = ShapeKind::box;
-  s.size = {x, y, z};
-  return s;
-}
-ShapeSpec ellipsoid(double a, double b, double c) {
-  ShapeSpec s;
-  s.kind = ShapeKind::ellipsoid;
-  s.radii = {a, b, c};
-  return s;
-}
 ShapeSpec round(ShapeKind kind, double r, double length) {
   ShapeSpec s;
   s.kind = kind;
@@ -50,13 +42,6 @@ ShapeSpec tetrahedron() {
   return s;
 }
 
-Isometry3d at(double x, double y, double z, double turn_z = 0) {
-  Isometry3d p = Isometry3d::Identity();
-  p.linear() = Eigen::AngleAxisd(turn_z, Vector3d::UnitZ()).toRotationMatrix();
-  p.translation() = Vector3d(x, y, z);
-  return p;
-}
-
 // ---------------------------------------------------------------- by hand
 
 TEST(Gjk, EllipsoidOverABoxFace) {
@@ -66,13 +51,13 @@ TEST(Gjk, EllipsoidOverABoxFace) {
   const Geometry e = Geometry::compile(ellipsoid(3, 1, 2));
   const GjkResult r = gjk_distance(b, at(0, 0, 0), e, at(0.2, 3, 0.1));
   ASSERT_FALSE(r.overlap);
-  EXPECT_NEAR(r.distance, 1.5, kExact);
-  EXPECT_NEAR(r.on_a.y(), 0.5, kExact);
+  EXPECT_NEAR(r.distance, 1.5, kGjkExact);
+  EXPECT_NEAR(r.on_a.y(), 0.5, kGjkExact);
   EXPECT_NEAR((r.on_b - Vector3d(0.2, 2, 0.1)).norm(), 0, 1e-6);  // the bottom; flat: GJK's point slides
   // Turned a quarter about z, its 3 m semi-axis points down: 3 - 3 - 0.5 < 0.
   EXPECT_TRUE(gjk_distance(b, at(0, 0, 0), e, at(0, 3, 0, std::numbers::pi / 2)).overlap);
   // At y = 4 it clears the face by 0.5.
-  EXPECT_NEAR(gjk_distance(b, at(0, 0, 0), e, at(0, 4, 0, std::numbers::pi / 2)).distance, 0.5, kExact);
+  EXPECT_NEAR(gjk_distance(b, at(0, 0, 0), e, at(0, 4, 0, std::numbers::pi / 2)).distance, 0.5, kGjkExact);
 }
 
 TEST(Gjk, BallLikeEllipsoidOffABoxEdgeAndCorner) {
@@ -81,12 +66,12 @@ TEST(Gjk, BallLikeEllipsoidOffABoxEdgeAndCorner) {
   const Geometry b = Geometry::compile(box(2, 2, 2));
   const Geometry e = Geometry::compile(ellipsoid(0.5, 0.5, 0.5));
   const GjkResult edge = gjk_distance(b, at(0, 0, 0), e, at(3, 3, 0.25));
-  EXPECT_NEAR(edge.distance, std::sqrt(8.0) - 0.5, kExact);
+  EXPECT_NEAR(edge.distance, std::sqrt(8.0) - 0.5, kGjkExact);
   // Along the edge the distance is flat to first order: a point off by s
   // adds s^2 / (2 d), so a picometre of distance leaves microns of point.
   EXPECT_NEAR((edge.on_a - Vector3d(1, 1, 0.25)).norm(), 0, 1e-6);
   const GjkResult corner = gjk_distance(b, at(0, 0, 0), e, at(3, -3, 3));
-  EXPECT_NEAR(corner.distance, std::sqrt(12.0) - 0.5, kExact);
+  EXPECT_NEAR(corner.distance, std::sqrt(12.0) - 0.5, kGjkExact);
   EXPECT_NEAR((corner.on_a - Vector3d(1, -1, 1)).norm(), 0, 1e-9);
   EXPECT_NEAR((corner.on_b - (Vector3d(3, -3, 3) - 0.5 * Vector3d(1, -1, 1).normalized())).norm(), 0, 1e-9);
 }
@@ -95,16 +80,16 @@ TEST(Gjk, CapsuleAndCylinderAgainstABox) {
   const Geometry b = Geometry::compile(box(2, 2, 2));
   // A capsule along x above the top face: 3 - 1 - 0.5.
   const Geometry cap = Geometry::compile(round(ShapeKind::capsule, 0.5, 2));
-  EXPECT_NEAR(gjk_distance(b, at(0, 0, 0), cap, at(0.5, 3, 0)).distance, 1.5, kExact);
+  EXPECT_NEAR(gjk_distance(b, at(0, 0, 0), cap, at(0.5, 3, 0)).distance, 1.5, kGjkExact);
   // Turned upright (its axis along y), its end cap is 1 + 0.5 below its centre.
-  EXPECT_NEAR(gjk_distance(b, at(0, 0, 0), cap, at(0, 4, 0, std::numbers::pi / 2)).distance, 1.5, kExact);
+  EXPECT_NEAR(gjk_distance(b, at(0, 0, 0), cap, at(0, 4, 0, std::numbers::pi / 2)).distance, 1.5, kGjkExact);
   // Beside the box's z edge at (1, 1), the axis parallel to it: sqrt(8) - 0.5.
   Isometry3d along_z = at(3, 3, 0);
   along_z.linear() = Eigen::AngleAxisd(std::numbers::pi / 2, Vector3d::UnitY()).toRotationMatrix();
-  EXPECT_NEAR(gjk_distance(b, at(0, 0, 0), cap, along_z).distance, std::sqrt(8.0) - 0.5, kExact);
+  EXPECT_NEAR(gjk_distance(b, at(0, 0, 0), cap, along_z).distance, std::sqrt(8.0) - 0.5, kGjkExact);
   // A cylinder end-on to the face: its flat end, 1 from its centre.
   const Geometry cyl = Geometry::compile(round(ShapeKind::cylinder, 0.5, 2));
-  EXPECT_NEAR(gjk_distance(b, at(0, 0, 0), cyl, at(3.5, 0.2, 0)).distance, 1.5, kExact);
+  EXPECT_NEAR(gjk_distance(b, at(0, 0, 0), cyl, at(3.5, 0.2, 0)).distance, 1.5, kGjkExact);
 }
 
 TEST(Gjk, HullAgainstABox) {
@@ -112,7 +97,7 @@ TEST(Gjk, HullAgainstABox) {
   // of a box of half size 1 centred at (3, 3, 3): (6 - 1) / sqrt(3).
   const Geometry t = Geometry::compile(tetrahedron());
   const Geometry b = Geometry::compile(box(2, 2, 2));
-  EXPECT_NEAR(gjk_distance(t, at(0, 0, 0), b, at(3, 3, 3)).distance, 5 / std::sqrt(3.0), kExact);
+  EXPECT_NEAR(gjk_distance(t, at(0, 0, 0), b, at(3, 3, 3)).distance, 5 / std::sqrt(3.0), kGjkExact);
   EXPECT_TRUE(gjk_distance(t, at(0, 0, 0), b, at(1.2, 0.5, 0.5)).overlap);
 }
 
@@ -123,7 +108,7 @@ TEST(Gjk, OverlapAndTouching) {
   EXPECT_TRUE(gjk_distance(b, at(0, 0, 0), e, at(0.5, 2.5, 0)).overlap);
   // Touching the face exactly: no gap worth a picometre.
   const GjkResult touching = gjk_distance(b, at(0, 0, 0), e, at(0, 3, 0));
-  EXPECT_TRUE(touching.overlap || touching.distance < kExact);
+  EXPECT_TRUE(touching.overlap || touching.distance < kGjkExact);
 }
 
 TEST(Gjk, ClosedFormsForSpheresThroughContactQuery) {
@@ -133,15 +118,15 @@ TEST(Gjk, ClosedFormsForSpheresThroughContactQuery) {
   const Geometry ball = Geometry::compile(s);
   const Geometry b = Geometry::compile(box(2, 2, 2));
   ContactQuery q;
-  EXPECT_NEAR(q.distance(ball, at(3, 0.5, 0), b, at(0, 0, 0)), 1.75, kExact);
-  EXPECT_NEAR(q.distance(b, at(0, 0, 0), ball, at(3, 3, -0.5)), std::sqrt(8.0) - 0.25, kExact);
+  EXPECT_NEAR(q.distance(ball, at(3, 0.5, 0), b, at(0, 0, 0)), 1.75, kGjkExact);
+  EXPECT_NEAR(q.distance(b, at(0, 0, 0), ball, at(3, 3, -0.5)), std::sqrt(8.0) - 0.25, kGjkExact);
   Vector3d near_a, near_b;
-  EXPECT_NEAR(q.distance(b, at(0, 0, 0), ball, at(-3, 3, 3), &near_a, &near_b), std::sqrt(12.0) - 0.25, kExact);
-  EXPECT_NEAR((near_a - Vector3d(-1, 1, 1)).norm(), 0, kExact);
-  EXPECT_NEAR((near_b - (Vector3d(-3, 3, 3) - 0.25 * Vector3d(-1, 1, 1).normalized())).norm(), 0, kExact);
+  EXPECT_NEAR(q.distance(b, at(0, 0, 0), ball, at(-3, 3, 3), &near_a, &near_b), std::sqrt(12.0) - 0.25, kGjkExact);
+  EXPECT_NEAR((near_a - Vector3d(-1, 1, 1)).norm(), 0, kGjkExact);
+  EXPECT_NEAR((near_b - (Vector3d(-3, 3, 3) - 0.25 * Vector3d(-1, 1, 1).normalized())).norm(), 0, kGjkExact);
   // Against an ellipsoid (GJK from the centre): a ball-like one of radius 1 at 5.
   const Geometry e = Geometry::compile(ellipsoid(1, 1, 1));
-  EXPECT_NEAR(q.distance(ball, at(0, 0, 0), e, at(3, 4, 0)), 5 - 1 - 0.25, kExact);
+  EXPECT_NEAR(q.distance(ball, at(0, 0, 0), e, at(3, 4, 0)), 5 - 1 - 0.25, kGjkExact);
 }
 
 TEST(Gjk, EllipsoidOverABoxFaceInClosedForm) {
@@ -157,19 +142,19 @@ TEST(Gjk, EllipsoidOverABoxFaceInClosedForm) {
   Vector3d on_box, on_e;
   const Isometry3d pe = at(1.5, 5, 0.1, std::numbers::pi / 4);
   const double x = 1.5 - 8 / std::sqrt(20.0);
-  EXPECT_NEAR(q.distance(b, at(0, 0, 0), e, pe, &on_box, &on_e), 4.5 - std::sqrt(5.0), kExact);
-  EXPECT_NEAR((on_box - Vector3d(x, 0.5, 0.1)).norm(), 0, kExact);
-  EXPECT_NEAR((on_e - Vector3d(x, 5 - std::sqrt(5.0), 0.1)).norm(), 0, kExact);
+  EXPECT_NEAR(q.distance(b, at(0, 0, 0), e, pe, &on_box, &on_e), 4.5 - std::sqrt(5.0), kGjkExact);
+  EXPECT_NEAR((on_box - Vector3d(x, 0.5, 0.1)).norm(), 0, kGjkExact);
+  EXPECT_NEAR((on_e - Vector3d(x, 5 - std::sqrt(5.0), 0.1)).norm(), 0, kGjkExact);
   // The same pair the other way round, and the box turned and moved with it.
-  EXPECT_NEAR(q.distance(e, pe, b, at(0, 0, 0), &on_e, &on_box), 4.5 - std::sqrt(5.0), kExact);
-  EXPECT_NEAR((on_box - Vector3d(x, 0.5, 0.1)).norm(), 0, kExact);
+  EXPECT_NEAR(q.distance(e, pe, b, at(0, 0, 0), &on_e, &on_box), 4.5 - std::sqrt(5.0), kGjkExact);
+  EXPECT_NEAR((on_box - Vector3d(x, 0.5, 0.1)).norm(), 0, kGjkExact);
   const Isometry3d move = at(0.3, -0.2, 0.7, 1.1);
-  EXPECT_NEAR(q.distance(b, move, e, move * pe, &on_box, &on_e), 4.5 - std::sqrt(5.0), kExact);
-  EXPECT_NEAR((on_e - move * Vector3d(x, 5 - std::sqrt(5.0), 0.1)).norm(), 0, kExact);
+  EXPECT_NEAR(q.distance(b, move, e, move * pe, &on_box, &on_e), 4.5 - std::sqrt(5.0), kGjkExact);
+  EXPECT_NEAR((on_e - move * Vector3d(x, 5 - std::sqrt(5.0), 0.1)).norm(), 0, kGjkExact);
   // Centred at x = 0.2 its lowest point is at x = -1.59, beyond the face's
   // edge at -1: the edge is nearest, and GJK answers (as gjk_distance does).
   const Isometry3d off = at(0.2, 5, 0.1, std::numbers::pi / 4);
-  EXPECT_NEAR(q.distance(b, at(0, 0, 0), e, off), gjk_distance(b, at(0, 0, 0), e, off).distance, kExact);
+  EXPECT_NEAR(q.distance(b, at(0, 0, 0), e, off), gjk_distance(b, at(0, 0, 0), e, off).distance, kGjkExact);
   EXPECT_GT(q.distance(b, at(0, 0, 0), e, off), 4.5 - std::sqrt(5.0));
   // Off an edge: a ball-like ellipsoid of radius 0.5 beside the z edge of a
   // box of half size 1 at (1, 1): sqrt(8) - 0.5, the box's point on the edge
@@ -316,7 +301,7 @@ TEST(Gjk, ContactAngleOnAnEllipsoidIsTheTangentPlane) {
     // The jaw within 1e-11 m of the actee, on the open side, as
     // find_contact_angle promises.
     // (GJK's tolerance, 1e-12 m, on the other side).
-    EXPECT_GE(excess(theta_c), -kExact) << "r = " << r;
+    EXPECT_GE(excess(theta_c), -kGjkExact) << "r = " << r;
     EXPECT_LE(excess(theta_c), 1e-11) << "r = " << r;
     EXPECT_TRUE(contacts[0].touching && contacts[1].touching);
     const test::JawTouch touch = test::ellipsoid_under_jaw(a, b, r, m.theta_max);

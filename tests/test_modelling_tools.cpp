@@ -37,15 +37,15 @@ using modelling::ToolModel;
 
 
 // A folder of the temporary directory, removed afterwards.
-class TempDir {
+class ToolsDir {
  public:
-  explicit TempDir(const std::string& name)
+  explicit ToolsDir(const std::string& name)
       : path_(fs::temp_directory_path() / ("afford_tools_" + std::to_string(::getpid()) + "_" + name)) {
     fs::create_directories(path_);
   }
-  ~TempDir() { fs::remove_all(path_); }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
+  ~ToolsDir() { fs::remove_all(path_); }
+  ToolsDir(const ToolsDir&) = delete;
+  ToolsDir& operator=(const ToolsDir&) = delete;
   std::string operator/(const std::string& name) const { return (path_ / name).string(); }
 
  private:
@@ -65,7 +65,7 @@ enum class Regions { given, from_shape };
 // cannot carry taken from the original: the spring and the functional
 // pose's rotation, as the exported file's comment says, and the regions
 // where `regions` says so.
-ToolModel round_trip(const ObjectSpec& original, const TempDir& dir, Regions regions = Regions::given) {
+ToolModel round_trip(const ObjectSpec& original, const ToolsDir& dir, Regions regions = Regions::given) {
   for (const modelling::ExportedFile& f : modelling::urdf_export(original)) write(dir / f.path, f.text);
   const modelling::UrdfTool tool = modelling::read_urdf_tool(dir / (original.name + ".urdf"));
   modelling::ToolModelOptions o;
@@ -103,7 +103,7 @@ TEST(ModelTool, ThePliersHandlesOuterFacesAreTheirContactPlanes) {
   // the emphasis, -130..-60 mm: y = 14 mm facing +y, y = -14 mm facing -y,
   // through the emphasis's middle, -95 mm.
   const ObjectSpec original = load_object(kSource + "/objects/pliers.yaml");
-  const TempDir dir("pliers-faces");
+  const ToolsDir dir("pliers-faces");
   const ToolModel m = round_trip(original, dir);
   const modelling::FacePlane& f = m.faces.fixed_contact;
   const modelling::FacePlane& g = m.faces.moving_contact;
@@ -119,7 +119,7 @@ TEST(ModelTool, ThePliersHandlesOuterFacesAreTheirContactPlanes) {
 TEST_P(RoundTrip, TheToolComesBackFromItsUrdf) {
   const Shipped& tool = GetParam();
   const ObjectSpec original = load_object(kSource + "/objects/" + tool.name + ".yaml");
-  const TempDir dir(tool.name);
+  const ToolsDir dir(tool.name);
   // The regions from the shape where it tells them (the pliers: figures in
   // ThePliersJawsAndHandleComeFromTheirShape); two plain bars cannot
   // (TwoPlainBarsCannotTellJawsFromHandle), and get them as the error asks.
@@ -214,7 +214,7 @@ class PlainBars : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PlainBars, TwoPlainBarsCannotTellJawsFromHandle) {
   const ObjectSpec original = load_object(kSource + "/objects/" + GetParam() + ".yaml");
-  const TempDir dir(GetParam() + "-bars");
+  const ToolsDir dir(GetParam() + "-bars");
   const std::string error = thrown<DataError>([&] { (void)round_trip(original, dir, Regions::from_shape); });
   EXPECT_THAT(error, ::testing::HasSubstr(GetParam() + ".urdf: expected jaws told apart from the handle by the gap "
                                                         "between the parts (smallest where the jaws meet), found a "
@@ -234,7 +234,7 @@ INSTANTIATE_TEST_SUITE_P(ShippedTools, PlainBars, ::testing::Values("nutcracker"
 // designer's choice the shape does not hold.
 TEST(RoundTripRegions, ThePliersJawsAndHandleComeFromTheirShape) {
   const ObjectSpec original = load_object(kSource + "/objects/pliers.yaml");
-  const TempDir dir("pliers-regions");
+  const ToolsDir dir("pliers-regions");
   const LeverGeometry l = round_trip(original, dir, Regions::from_shape).lever;
   EXPECT_EQ(l.pattern, LeverPattern::type1_power);
   EXPECT_NEAR(l.application.from, -0.140 + 169 * 0.182 / 200, 0.1e-3);
@@ -251,7 +251,7 @@ class RoundTripGuide : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RoundTripGuide, FitsTheSameActeesAtTheSamePlaces) {
   const ObjectSpec original = load_object(kSource + "/objects/" + GetParam() + ".yaml");
-  const TempDir dir(GetParam() + "-guide");
+  const ToolsDir dir(GetParam() + "-guide");
   write(dir / "modelled.yaml", modelling::object_yaml(round_trip(original, dir)));
   const ObjectSpec modelled = load_object(dir / "modelled.yaml");
   ASSERT_FALSE(modelled.interaction_space.distances.empty());
@@ -290,7 +290,7 @@ class RoundTripSession : public ::testing::TestWithParam<std::pair<std::string, 
 
 TEST_P(RoundTripSession, InfersTheSameFunctions) {
   const auto& [session_name, tool] = GetParam();
-  const TempDir dir(session_name);
+  const ToolsDir dir(session_name);
   const ObjectSpec original = load_object(kSource + "/objects/" + tool + ".yaml");
   const std::string modelled = dir / "modelled.yaml";
   write(modelled, modelling::object_yaml(round_trip(original, dir)));
@@ -400,7 +400,7 @@ TEST(ModelPartNet, AFileWithoutASpringSaysHowToGetOne) {
   o.density = 7850;
   const ToolModel m =
       modelling::model_tool(modelling::read_urdf_tool(kSource + "/tests/data/partnet/stapler/mobility.urdf"), o);
-  const TempDir dir("spring");
+  const ToolsDir dir("spring");
   write(dir / "stapler.yaml", modelling::object_yaml(m));
   const std::string error = thrown<DataError>([&] { (void)load_object(dir / "stapler.yaml"); });
   EXPECT_THAT(error, ::testing::HasSubstr("stapler.yaml:"));
@@ -482,7 +482,7 @@ TEST(ModelToolErrors, EachSaysWhatTheShapeLacks) {
 }
 
 TEST(ModelToolErrors, ABadInertialIsLocatedAtItsLink) {
-  const TempDir dir("inertial");
+  const ToolsDir dir("inertial");
   write(dir / "t.urdf", R"(<robot name="t">
   <link name="a"><inertial><mass value="-1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>
     <collision><geometry><box size="0.1 0.01 0.008"/></geometry></collision></link>
@@ -495,7 +495,7 @@ TEST(ModelToolErrors, ABadInertialIsLocatedAtItsLink) {
 }
 
 TEST(ModelToolErrors, JointsTheToolCannotUse) {
-  const TempDir dir("joints");
+  const ToolsDir dir("joints");
   const std::string links = R"(<link name="a"><collision><geometry><box size="0.1 0.01 0.008"/></geometry></collision></link>
   <link name="b"><collision><geometry><box size="0.1 0.01 0.008"/></geometry></collision></link>
   <link name="c"><collision><geometry><box size="0.1 0.01 0.008"/></geometry></collision></link>)";
@@ -521,7 +521,7 @@ TEST(ModelToolErrors, JointsTheToolCannotUse) {
 // The export and the model are deterministic: the same text every time.
 TEST(ModelTool, TheFileIsTheSameEveryRun) {
   const ObjectSpec pliers = load_object(kSource + "/objects/pliers.yaml");
-  const TempDir dir("det");
+  const ToolsDir dir("det");
   const std::string first = modelling::object_yaml(round_trip(pliers, dir));
   EXPECT_EQ(modelling::object_yaml(round_trip(pliers, dir)), first);
 }

@@ -29,6 +29,7 @@
 
 namespace afford {
 namespace {
+using test::TempDir;
 using test::paper_nutcracker;
 using test::kSource;
 
@@ -46,21 +47,6 @@ std::string slurp(const fs::path& p) {
 
 // A file written as a user would, not through afford.
 void user_writes(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
-
-// A fresh folder, removed at the end of the test.
-struct TempDir {
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "afford-test-out-XXXXXX").string();
-    EXPECT_NE(::mkdtemp(pattern.data()), nullptr);
-    path = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string at(const std::string& name) const { return (path / name).string(); }
-  fs::path path;
-};
 
 std::string refused(const std::function<void()>& f) { return test::thrown<OutputRefused>(f); }
 

@@ -43,20 +43,6 @@ void spit(const fs::path& p, const std::string& bytes) {
   out << bytes;
 }
 
-// A fresh folder, removed at the end of the test.
-struct TempDir {
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "afford-test-rec-XXXXXX").string();
-    EXPECT_NE(::mkdtemp(pattern.data()), nullptr);
-    path = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  fs::path path;
-};
-
 // Keeps the final state's hash.
 class FinalHash : public Observer {
  public:

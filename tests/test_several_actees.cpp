@@ -70,7 +70,7 @@ const std::string kTwo =
     "  - {file: ../actees/walnut.yaml, at: 60 mm}\n"              // 5
     "  - {file: ../actees/hazelnut.yaml, at: 50 mm, name: nut}\n";  // 6
 
-std::string error_of(const std::string& yaml) {
+std::string actees_error(const std::string& yaml) {
   try {
     (void)read_session(load_yaml_string(yaml, kSessionName));
   } catch (const DataError& e) {
@@ -121,28 +121,28 @@ TEST(SeveralActees, TheNextGoesOnTheToolWhereTheToolIsNow) {
 }
 
 TEST(SeveralActees, MistakesAreLocated) {
-  EXPECT_THAT(error_of(session_yaml(kTwo, "  - after: 1 s\n    actee: hazlenut\n")),
+  EXPECT_THAT(actees_error(session_yaml(kTwo, "  - after: 1 s\n    actee: hazlenut\n")),
               HasSubstr("test.yaml:16:12: expected an actee of the session's 'actees:' (walnut, nut), found "
                         "'hazlenut'"));
-  EXPECT_THAT(error_of(session_yaml(kWalnutAt60, "  - after: 1 s\n    actee: walnut\n")),
+  EXPECT_THAT(actees_error(session_yaml(kWalnutAt60, "  - after: 1 s\n    actee: walnut\n")),
               HasSubstr("test.yaml:14:12: expected no 'actee:' here (the session lists no 'actees:'"));
-  EXPECT_THAT(error_of(session_yaml("actee: {file: ../actees/walnut.yaml, at: 60 mm}\n" + kTwo, "")),
+  EXPECT_THAT(actees_error(session_yaml("actee: {file: ../actees/walnut.yaml, at: 60 mm}\n" + kTwo, "")),
               HasSubstr("expected either 'actee' or 'actees' (several), found both"));
-  EXPECT_THAT(error_of(session_yaml("actees:\n  - {file: ../actees/walnut.yaml, at: 60 mm}\n"
+  EXPECT_THAT(actees_error(session_yaml("actees:\n  - {file: ../actees/walnut.yaml, at: 60 mm}\n"
                                     "  - {file: ../actees/walnut.yaml, at: 55 mm}\n",
                                     "")),
               HasSubstr("test.yaml:6:5: expected an actee named apart from the others (give it a 'name'), found "
                         "'walnut' again"));
-  EXPECT_THAT(error_of(session_yaml("actees:\n  - {file: ../actees/walnut.yaml, at: 60 mm, nmae: a}\n", "")),
+  EXPECT_THAT(actees_error(session_yaml("actees:\n  - {file: ../actees/walnut.yaml, at: 60 mm, nmae: a}\n", "")),
               HasSubstr("test.yaml:5:"));
-  EXPECT_THAT(error_of(session_yaml("actees: []\n", "")), HasSubstr("expected a sequence of actees"));
+  EXPECT_THAT(actees_error(session_yaml("actees: []\n", "")), HasSubstr("expected a sequence of actees"));
   // A squeeze until an actee's force is the actee's on the tool then.
-  EXPECT_THAT(error_of(session_yaml(kTwo, "  - after: 1 s\n"
+  EXPECT_THAT(actees_error(session_yaml(kTwo, "  - after: 1 s\n"
                                           "    grip: {thumb: 160 mm, index: 160 mm, squeeze: {until: actee_force, "
                                           "value: 400 N}}\n")),
               HasSubstr("found 400 N: the walnut breaks at 378 N, before 400 N"));
   // The hazelnut (431 N) takes it.
-  EXPECT_EQ(error_of(session_yaml(kTwo, "  - after: 1 s\n    actee: nut\n"
+  EXPECT_EQ(actees_error(session_yaml(kTwo, "  - after: 1 s\n    actee: nut\n"
                                         "  - after: 1 s\n"
                                         "    grip: {thumb: 160 mm, index: 160 mm, squeeze: {until: actee_force, "
                                         "value: 400 N}}\n")),

@@ -70,7 +70,7 @@ TEST(SqueezeUntil, AnActeeForceWorkedByHand) {
 // `keyframes` (test_sessions.h: from line 13).
 std::string session_yaml(const std::string& keyframes) { return nutcracker_session(kWalnutAt60, keyframes); }
 
-std::string error_of(const std::string& keyframes) {
+std::string squeeze_error(const std::string& keyframes) {
   try {
     (void)read_session(load_yaml_string(session_yaml(keyframes), kSessionName));
   } catch (const DataError& e) {
@@ -128,25 +128,25 @@ TEST(SqueezeUntil, ReleaseTakesTheFingersOffTheTool) {
 }
 
 TEST(SqueezeUntil, MistakesAreLocated) {
-  EXPECT_THAT(error_of("  - after: 1 s\n"
+  EXPECT_THAT(squeeze_error("  - after: 1 s\n"
                        "    grip: {thumb: 160 mm, index: 160 mm, squeeze: {until: actee_force, value: 500 N}}\n"),
               HasSubstr("test.yaml:14:"));
-  EXPECT_THAT(error_of("  - after: 1 s\n"
+  EXPECT_THAT(squeeze_error("  - after: 1 s\n"
                        "    grip: {thumb: 160 mm, index: 160 mm, squeeze: {until: actee_force, value: 500 N}}\n"),
               HasSubstr("found 500 N: the walnut breaks at 378 N, before 500 N"));
-  EXPECT_THAT(error_of("  - after: 1 s\n"
+  EXPECT_THAT(squeeze_error("  - after: 1 s\n"
                        "    grip: {thumb: 160 mm, index: 160 mm, squeeze: {until: effort, value: 450 N}}\n"),
               HasSubstr("expected an effort within the agent's largest, 400 N, found 450 N"));
-  EXPECT_THAT(error_of("  - after: 1 s\n"
+  EXPECT_THAT(squeeze_error("  - after: 1 s\n"
                        "    grip: {thumb: 160 mm, index: 160 mm, squeeze: {until: torque, value: 1 N}}\n"),
               HasSubstr("test.yaml:14:"));
-  EXPECT_THAT(error_of("  - t: 1 s\n    after: 1 s\n"), HasSubstr("one of t, after and hold"));
-  EXPECT_THAT(error_of("  - hold: 1 s\n    posture: medium_wrap\n"), HasSubstr("nothing beside 'hold'"));
-  EXPECT_THAT(error_of("  - hand: {position: [80 mm, 40 mm, 190 mm]}\n"), HasSubstr("key 't' (or 'after' or 'hold'"));
-  EXPECT_THAT(error_of("  - after: 1 s\n    release: false\n"), HasSubstr("found false"));
-  EXPECT_THAT(error_of("  - after: 1 s\n    release: true\n    grip: {thumb: 160 mm, index: 160 mm, squeeze: 0 mm}\n"),
+  EXPECT_THAT(squeeze_error("  - t: 1 s\n    after: 1 s\n"), HasSubstr("one of t, after and hold"));
+  EXPECT_THAT(squeeze_error("  - hold: 1 s\n    posture: medium_wrap\n"), HasSubstr("nothing beside 'hold'"));
+  EXPECT_THAT(squeeze_error("  - hand: {position: [80 mm, 40 mm, 190 mm]}\n"), HasSubstr("key 't' (or 'after' or 'hold'"));
+  EXPECT_THAT(squeeze_error("  - after: 1 s\n    release: false\n"), HasSubstr("found false"));
+  EXPECT_THAT(squeeze_error("  - after: 1 s\n    release: true\n    grip: {thumb: 160 mm, index: 160 mm, squeeze: 0 mm}\n"),
               HasSubstr("release with grip or fingertips"));
-  EXPECT_THAT(error_of("  - after: -1 s\n"), HasSubstr("test.yaml:13:"));
+  EXPECT_THAT(squeeze_error("  - after: -1 s\n"), HasSubstr("test.yaml:13:"));
 }
 
 }  // namespace

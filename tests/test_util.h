@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <numbers>
@@ -40,6 +41,23 @@ inline std::filesystem::path fresh_dir(const std::string& kind, const std::strin
   std::filesystem::create_directories(dir);
   return dir;
 }
+
+// A fresh folder of its own, removed at the end of the test.
+struct TempDir {
+  TempDir() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "afford-test-XXXXXX").string();
+    EXPECT_NE(::mkdtemp(pattern.data()), nullptr);
+    path = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  std::string at(const std::string& name) const { return (path / name).string(); }
+  std::filesystem::path path;
+};
 
 // The index of `name` in `names`; -2 when it is not there (a grid's cells
 // hold -1 for "no function").
