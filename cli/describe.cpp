@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "data_dir.h"
 #include "option_checks.h"
+#include "quantity_text.h"
 #include "derive.h"
 #include "effects.h"
 #include "lever.h"
@@ -33,7 +34,7 @@ void describe_effects() {
     std::cout << "  " << e.name << " (" << home_name(e.home) << " file): " << e.doc << "\n";
     for (const EffectParam& p : e.params) {
       std::cout << "      " << p.key << ": " << p.doc << ", " << (p.min_included ? "from " : "above ")
-                << format_quantity(p.min, p.dimension) << " to " << format_quantity(p.max, p.dimension) << "\n";
+                << q(p.min, p.dimension) << " to " << q(p.max, p.dimension) << "\n";
     }
     std::cout << "      enabled: true|false (optional, default true)\n";
   }
@@ -44,7 +45,7 @@ std::string effect_line(const ModelEffect& e) {
   std::string line = e.name + ":";
   const EffectManifest& manifest = manifest_of(e.kind);
   for (size_t i = 0; i < manifest.params.size(); ++i) {
-    line += " " + std::string(manifest.params[i].key) + " " + format_quantity(e.param[i], manifest.params[i].dimension);
+    line += " " + std::string(manifest.params[i].key) + " " + q(e.param[i], manifest.params[i].dimension);
   }
   return line + (e.enabled ? "" : " (disabled)");
 }
@@ -52,20 +53,20 @@ std::string effect_line(const ModelEffect& e) {
 void describe_object(const ObjectSpec& o, const std::string& actee_dir) {
   const Model m = compile(o, nullptr, nullptr, ModelOptions{});
   std::cout << "object " << o.name << ": " << o.description << "\n";
-  std::cout << "lever: " << pattern_name(o.lever.pattern) << ", arms from " << format_quantity(m.arm_from, dim::length)
-            << " to " << format_quantity(m.arm_to, dim::length) << ", opening " << format_quantity(m.theta_min, dim::angle) << " to "
-            << format_quantity(m.theta_max, dim::angle) << ", rest " << format_quantity(m.theta_rest, dim::angle) << "\n";
+  std::cout << "lever: " << pattern_name(o.lever.pattern) << ", arms from " << q(m.arm_from, dim::length)
+            << " to " << q(m.arm_to, dim::length) << ", opening " << q(m.theta_min, dim::angle) << " to "
+            << q(m.theta_max, dim::angle) << ", rest " << q(m.theta_rest, dim::angle) << "\n";
 
   std::cout << "mechanical advantage (force at the load per unit effort):\n      effort at";
   constexpr int kLoads = 3, kEfforts = 5;
   for (int j = 0; j < kLoads; ++j) {
     const double a = m.application_from + (m.application_to - m.application_from) * j / (kLoads - 1);
-    std::printf("   load %9s", format_quantity(a, dim::length).c_str());
+    std::printf("   load %9s", q(a, dim::length).c_str());
   }
   std::cout << "\n";
   for (int i = 0; i < kEfforts; ++i) {
     const double e = m.emphasis_from + (m.emphasis_to - m.emphasis_from) * i / (kEfforts - 1);
-    std::printf("  %10s", format_quantity(e, dim::length).c_str());
+    std::printf("  %10s", q(e, dim::length).c_str());
     for (int j = 0; j < kLoads; ++j) {
       const double a = m.application_from + (m.application_to - m.application_from) * j / (kLoads - 1);
       std::printf("   %5.2f %-9s", mechanical_advantage(e, a), pattern_name(pattern_at(e, a)));
@@ -74,17 +75,17 @@ void describe_object(const ObjectSpec& o, const std::string& actee_dir) {
   }
 
   const InteractionSpace s = interaction_space(m);
-  std::cout << "interaction space: from " << format_quantity(s.from, dim::length) << " to " << format_quantity(s.to, dim::length)
-            << " along the arm, jaw opening at theta_max " << format_quantity(s.gap_from, dim::length) << " to "
-            << format_quantity(s.gap_to, dim::length) << "\n";
+  std::cout << "interaction space: from " << q(s.from, dim::length) << " to " << q(s.to, dim::length)
+            << " along the arm, jaw opening at theta_max " << q(s.gap_from, dim::length) << " to "
+            << q(s.gap_to, dim::length) << "\n";
 
-  std::cout << "spring: " << format_quantity(m.spring_constant, dim::stiffness) << " at " << format_quantity(m.spring_position, dim::length)
-            << "; force at theta_min " << format_quantity(spring_force(m, m.theta_min), dim::force) << ", at rest "
-            << format_quantity(spring_force(m, m.theta_rest), dim::force) << ", at theta_max "
-            << format_quantity(spring_force(m, m.theta_max), dim::force) << "\n";
+  std::cout << "spring: " << q(m.spring_constant, dim::stiffness) << " at " << q(m.spring_position, dim::length)
+            << "; force at theta_min " << q(spring_force(m, m.theta_min), dim::force) << ", at rest "
+            << q(spring_force(m, m.theta_rest), dim::force) << ", at theta_max "
+            << q(spring_force(m, m.theta_max), dim::force) << "\n";
   const double far = std::abs(m.emphasis_to) > std::abs(m.emphasis_from) ? m.emphasis_to : m.emphasis_from;
-  std::cout << "effort to close against the spring alone, at " << format_quantity(far, dim::length) << ": "
-            << format_quantity(effort_for_load(m, m.theta_min, far, m.application_from, 0), dim::force) << "\n";
+  std::cout << "effort to close against the spring alone, at " << q(far, dim::length) << ": "
+            << q(effort_for_load(m, m.theta_min, far, m.application_from, 0), dim::force) << "\n";
   for (const ModelEffect& e : m.effects) std::cout << "effect " << effect_line(e) << "\n";
 
   if (actee_dir.empty() || !std::filesystem::is_directory(actee_dir)) return;
@@ -102,9 +103,9 @@ void describe_object(const ObjectSpec& o, const std::string& actee_dir) {
     const ActeeFit fit = fit_actee(with);
     if (fit.fits) {
       std::printf("  %-12s fits from %s to %s; jaws touch at %s; limit %s needs %s at the handle end\n",
-                  a.name.c_str(), format_quantity(fit.from, dim::length).c_str(), format_quantity(fit.to, dim::length).c_str(),
-                  format_quantity(fit.contact_angle, dim::angle).c_str(), format_quantity(a.limit, dim::force).c_str(),
-                  format_quantity(fit.effort_to_limit, dim::force).c_str());
+                  a.name.c_str(), q(fit.from, dim::length).c_str(), q(fit.to, dim::length).c_str(),
+                  q(fit.contact_angle, dim::angle).c_str(), q(a.limit, dim::force).c_str(),
+                  q(fit.effort_to_limit, dim::force).c_str());
     } else {
       std::printf("  %-12s does not fit: %s\n", a.name.c_str(), fit.why.c_str());
     }
@@ -127,9 +128,9 @@ void describe_actee(const Model& m, const ForcedLever& lever) {
   } else if (!lever.actee) {
     std::cout << "actee " << m.actee_name << ": not between the jaws as placed\n";
   } else {
-    std::cout << "actee " << m.actee_name << " as placed: the jaws touch it at " << format_quantity(lever.contact_angle, dim::angle)
-              << ", its load's arm " << format_quantity(lever.load_distance, dim::length) << ", " << format_quantity(lever.thickness, dim::length)
-              << " across the jaws; limit " << format_quantity(m.actee_limit, dim::force) << (m.actee_breaks ? " (it breaks)" : "")
+    std::cout << "actee " << m.actee_name << " as placed: the jaws touch it at " << q(lever.contact_angle, dim::angle)
+              << ", its load's arm " << q(lever.load_distance, dim::length) << ", " << q(lever.thickness, dim::length)
+              << " across the jaws; limit " << q(m.actee_limit, dim::force) << (m.actee_breaks ? " (it breaks)" : "")
               << "\n";
   }
 }
@@ -137,9 +138,9 @@ void describe_actee(const Model& m, const ForcedLever& lever) {
 void describe_session(const CompiledSession& s) {
   std::cout << "session " << s.name << ": " << s.description << "\n";
   const Model& hand = s.model;  // the tool and the hand are every actee's model's
-  std::cout << "object " << hand.object_name << ", rest " << format_quantity(hand.theta_rest, dim::angle) << ", hand "
-            << hand.agent_name << " (force_gain " << format_quantity(hand.force_gain, dim::stiffness) << ", at most "
-            << format_quantity(hand.max_force, dim::force) << ")\n";
+  std::cout << "object " << hand.object_name << ", rest " << q(hand.theta_rest, dim::angle) << ", hand "
+            << hand.agent_name << " (force_gain " << q(hand.force_gain, dim::stiffness) << ", at most "
+            << q(hand.max_force, dim::force) << ")\n";
   // Each actee's model and lever: the one of `actee:`, or each of `actees:`.
   std::vector<const Model*> models;
   if (s.actee_models.empty()) models.push_back(&s.model);
@@ -168,28 +169,28 @@ void describe_session(const CompiledSession& s) {
     std::string grasp;
     const double cap = effort_cap(m, k, &grasp);
     const double effort = effort_for_squeeze(m, lever, r, squeeze, cap);
-    std::printf("  t %s: squeeze %s at %s, %s: effort %s", format_quantity(k.t, dim::time).c_str(), format_quantity(squeeze, dim::length).c_str(),
-                format_quantity(r, dim::length).c_str(), grasp.c_str(), format_quantity(effort, dim::force).c_str());
+    std::printf("  t %s: squeeze %s at %s, %s: effort %s", q(k.t, dim::time).c_str(), q(squeeze, dim::length).c_str(),
+                q(r, dim::length).c_str(), grasp.c_str(), q(effort, dim::force).c_str());
     if (lever.actee) {
       const double force = settle_under_effort(m, lever, r, effort).actee_force;
       const std::string name = s.actee_names.empty() ? std::string("the actee") : "'" + s.actee_names[in_play] + "'";
       if (m.actee_breaks && force > m.actee_limit) {
         std::printf(", %s past its limit (it breaks)", name.c_str());
       } else {
-        std::printf(", %s %s", name.c_str(), format_quantity(force, dim::force).c_str());
+        std::printf(", %s %s", name.c_str(), q(force, dim::force).c_str());
       }
     }
     std::printf("\n");
     const auto key = std::make_tuple(r, cap, in_play);
     if (!lever.actee || std::find(told.begin(), told.end(), key) != told.end()) continue;
     told.push_back(key);
-    std::printf("    with the thumb at %s the jaws touch at a squeeze of %s", format_quantity(r, dim::length).c_str(),
-                format_quantity(std::max(0.0, std::abs(r) * (m.theta_rest - lever.contact_angle)), dim::length).c_str());
+    std::printf("    with the thumb at %s the jaws touch at a squeeze of %s", q(r, dim::length).c_str(),
+                q(std::max(0.0, std::abs(r) * (m.theta_rest - lever.contact_angle)), dim::length).c_str());
     double to_limit = 0;
     std::string why;
     if (effort_for_actee_force(m, lever, r, m.actee_limit, cap, &to_limit, &why)) {
       std::printf("; the limit needs a squeeze of %s (effort %s)\n",
-                  format_quantity(squeeze_for_effort(m, lever, r, to_limit), dim::length).c_str(), format_quantity(to_limit, dim::force).c_str());
+                  q(squeeze_for_effort(m, lever, r, to_limit), dim::length).c_str(), q(to_limit, dim::force).c_str());
     } else {
       std::printf("; the limit is out of reach: %s\n", why.c_str());
     }
@@ -201,17 +202,17 @@ void describe_session(const CompiledSession& s) {
 void describe_agent(const AgentSpec& a) {
   const Model m = compile_agent_only(a);
   std::cout << "agent " << a.name << ": " << a.description << "\n";
-  std::cout << "force_gain " << format_quantity(m.force_gain, dim::stiffness) << ", at most " << format_quantity(m.max_force, dim::force);
-  if (m.hand_damping > 0) std::cout << ", damping " << format_quantity(m.hand_damping, dim::damping);
+  std::cout << "force_gain " << q(m.force_gain, dim::stiffness) << ", at most " << q(m.max_force, dim::force);
+  if (m.hand_damping > 0) std::cout << ", damping " << q(m.hand_damping, dim::damping);
   std::cout << "\n";
   for (size_t f = 0; f < kFingers; ++f) {
-    std::cout << "  " << kFingerNames[f] << ": tip radius " << format_quantity(m.tip_radius[f], dim::length);
+    std::cout << "  " << kFingerNames[f] << ": tip radius " << q(m.tip_radius[f], dim::length);
     for (size_t j = 0; j < kJoints; ++j) {
-      std::cout << ", " << kJointNames[j] << " " << format_quantity(m.joint_min[f][j], dim::angle) << " to "
-                << format_quantity(m.joint_max[f][j], dim::angle);
+      std::cout << ", " << kJointNames[j] << " " << q(m.joint_min[f][j], dim::angle) << " to "
+                << q(m.joint_max[f][j], dim::angle);
     }
     if (m.has_reach) {
-      std::cout << "; the tip reaches " << format_quantity(m.reach_min[f], dim::length) << " to " << format_quantity(m.reach_max[f], dim::length)
+      std::cout << "; the tip reaches " << q(m.reach_min[f], dim::length) << " to " << q(m.reach_max[f], dim::length)
                 << " from the wrist";
     }
     std::cout << "\n";

@@ -14,14 +14,14 @@
 #include "commands.h"
 #include "data_dir.h"
 #include "explore_json.h"
+#include "reports.h"
+#include "option_checks.h"
+#include "quantity_text.h"
 #include "guides.h"
 #include "json_output.h"
 #include "lever.h"
 #include "load.h"
 #include "model.h"
-#include "option_checks.h"
-#include "quantity_text.h"
-#include "reports.h"
 
 namespace afford::cli {
 namespace {
@@ -44,7 +44,7 @@ std::string rotation_text(const Eigen::Matrix3d& r) {
   const Eigen::AngleAxisd aa(r);
   if (std::abs(aa.angle()) < 1e-9) return "not turned";
   const Eigen::Vector3d& a = aa.axis();
-  return "turned " + format_quantity(aa.angle(), dim::angle) + " about [" + plain(a.x()) + ", " + plain(a.y()) + ", " +
+  return "turned " + q(aa.angle(), dim::angle) + " about [" + plain(a.x()) + ", " + plain(a.y()) + ", " +
          plain(a.z()) + "]";
 }
 
@@ -55,8 +55,8 @@ void print_runs(const Guides& g, int index) {
   double from = 0, to = 0;
   auto flush = [&] {
     if (!open) return;
-    std::cout << "    " << (force ? "magnifies force    " : "magnifies distance") << " from " << format_quantity(from, dim::length)
-              << " to " << format_quantity(to, dim::length) << "\n";
+    std::cout << "    " << (force ? "magnifies force    " : "magnifies distance") << " from " << q(from, dim::length)
+              << " to " << q(to, dim::length) << "\n";
   };
   for (const GuideSegment& s : g.segments) {
     if (s.guide != index || s.frame != Arm::fixed) continue;
@@ -85,19 +85,19 @@ void print_stable_turn(const GuideFacts& f) {
     std::cout << "  as it stands (the moving arm " << (f.stable_turn == 0 ? "above" : "below")
               << ") and turned over:\n";
   } else {
-    std::cout << "  turned " << format_quantity(f.stable_turn, dim::angle) << " about its length, the plane parallel to gravity:\n";
+    std::cout << "  turned " << q(f.stable_turn, dim::angle) << " about its length, the plane parallel to gravity:\n";
   }
   auto way = [&](const char* where, double weight) {
-    std::cout << "    the moving arm " << where << ": its weight " << format_quantity(std::abs(weight), dim::torque)
+    std::cout << "    the moving arm " << where << ": its weight " << q(std::abs(weight), dim::torque)
               << (weight < 0 ? " closing" : " opening") << " at rest";
     if (weight >= 0) {
       std::cout << ", the arm rests open\n";
     } else if (-weight <= hold) {
-      std::cout << ", against the spring's " << format_quantity(f.spring_at_rest, dim::torque) << " and the pivot's "
-                << format_quantity(f.friction_at_rest, dim::torque) << ": the arm rests open\n";
+      std::cout << ", against the spring's " << q(f.spring_at_rest, dim::torque) << " and the pivot's "
+                << q(f.friction_at_rest, dim::torque) << ": the arm rests open\n";
     } else {
-      std::cout << ", more than the spring's " << format_quantity(f.spring_at_rest, dim::torque) << " and the pivot's "
-                << format_quantity(f.friction_at_rest, dim::torque) << ": the arm falls closed unless held\n";
+      std::cout << ", more than the spring's " << q(f.spring_at_rest, dim::torque) << " and the pivot's "
+                << q(f.friction_at_rest, dim::torque) << ": the arm falls closed unless held\n";
     }
   };
   way("above", f.weight_above);
@@ -124,12 +124,12 @@ void print_text(const Guides& g, const std::string& guides_file, const std::stri
     std::cout << s.name << " (" << guide_kind_name(s.kind) << "): " << s.description << "\n";
     switch (s.kind) {
       case GuideKind::symmetry_plane:
-        std::cout << "  plane of symmetry through " << format_vector(f.symmetry_point, dim::length) << ", normal ["
+        std::cout << "  plane of symmetry through " << qv(f.symmetry_point, dim::length) << ", normal ["
                   << plain(f.symmetry_normal.x()) << ", " << plain(f.symmetry_normal.y()) << ", "
                   << plain(f.symmetry_normal.z()) << "] (object frame)\n";
-        std::cout << "  functional pose: object frame at " << format_vector(f.functional_pose.translation(), dim::length)
+        std::cout << "  functional pose: object frame at " << qv(f.functional_pose.translation(), dim::length)
                   << " in the world, " << rotation_text(f.functional_pose.linear()) << "\n";
-        std::cout << "  at the functional pose the plane is " << format_quantity(f.plane_to_gravity, dim::angle)
+        std::cout << "  at the functional pose the plane is " << q(f.plane_to_gravity, dim::angle)
                   << " from gravity ("
                   << (f.plane_to_gravity < 0.1 ? "parallel: the stable orientation of Sec. 4.4"
                                                : "Sec. 4.4: most stable with the plane parallel to gravity")
@@ -137,14 +137,14 @@ void print_text(const Guides& g, const std::string& guides_file, const std::stri
         if (f.stable_turn_found) print_stable_turn(f);
         break;
       case GuideKind::interaction_space:
-        std::cout << "  interaction space: from " << format_quantity(f.space.from, dim::length) << " to "
-                  << format_quantity(f.space.to, dim::length) << " along the arm, jaw opening at theta_max "
-                  << format_quantity(f.space.gap_from, dim::length) << " to " << format_quantity(f.space.gap_to, dim::length) << "\n";
+        std::cout << "  interaction space: from " << q(f.space.from, dim::length) << " to "
+                  << q(f.space.to, dim::length) << " along the arm, jaw opening at theta_max "
+                  << q(f.space.gap_from, dim::length) << " to " << q(f.space.gap_to, dim::length) << "\n";
         if (f.space.from_shape) {
           std::cout << "  from the tool's shape (interaction_space), the gap fully open:";
           for (size_t k = 0; k < f.space.distances.size(); ++k) {
-            std::cout << (k > 0 ? "," : "") << " " << format_quantity(f.space.gaps[k], dim::length) << " at "
-                      << format_quantity(f.space.distances[k], dim::length);
+            std::cout << (k > 0 ? "," : "") << " " << q(f.space.gaps[k], dim::length) << " at "
+                      << q(f.space.distances[k], dim::length);
           }
           std::cout << "\n";
         }
@@ -156,8 +156,8 @@ void print_text(const Guides& g, const std::string& guides_file, const std::stri
         for (const ActeeFit& fit : f.actees) {
           if (fit.fits) {
             std::printf("    %-12s fits from %s to %s; jaws touch at %s; its limit needs %s at the emphasis end\n",
-                        fit.name.c_str(), format_quantity(fit.from, dim::length).c_str(), format_quantity(fit.to, dim::length).c_str(),
-                        format_quantity(fit.contact_angle, dim::angle).c_str(), format_quantity(fit.effort_to_limit, dim::force).c_str());
+                        fit.name.c_str(), q(fit.from, dim::length).c_str(), q(fit.to, dim::length).c_str(),
+                        q(fit.contact_angle, dim::angle).c_str(), q(fit.effort_to_limit, dim::force).c_str());
           } else {
             std::printf("    %-12s does not fit: %s\n", fit.name.c_str(), fit.why.c_str());
           }
@@ -166,19 +166,19 @@ void print_text(const Guides& g, const std::string& guides_file, const std::stri
       case GuideKind::emphasis: {
         int faces = 0;
         for (const GuideRect& r : g.rects) faces += r.guide == static_cast<int>(i);
-        std::cout << "  push from " << format_quantity(f.emphasis_from, dim::length) << " to " << format_quantity(f.emphasis_to, dim::length)
+        std::cout << "  push from " << q(f.emphasis_from, dim::length) << " to " << q(f.emphasis_to, dim::length)
                   << " along the arms, " << faces << " face" << (faces == 1 ? "" : "s") << ":\n";
         for (const GuideRect& r : g.rects) {
           if (r.guide != static_cast<int>(i)) continue;
           std::cout << "    " << (r.frame == Arm::fixed ? "fixed arm " : "moving arm") << " face at "
-                    << format_vector(r.centre, dim::length) << ", facing [" << plain(r.normal.x()) << ", "
-                    << plain(r.normal.y()) << ", " << plain(r.normal.z()) << "], " << format_quantity(2 * r.half_u, dim::length)
-                    << " by " << format_quantity(2 * r.half_v, dim::length) << "\n";
+                    << qv(r.centre, dim::length) << ", facing [" << plain(r.normal.x()) << ", "
+                    << plain(r.normal.y()) << ", " << plain(r.normal.z()) << "], " << q(2 * r.half_u, dim::length)
+                    << " by " << q(2 * r.half_v, dim::length) << "\n";
         }
         break;
       }
       case GuideKind::advantage:
-        std::cout << "  load at " << format_quantity(f.load_at, dim::length) << "; mechanical advantage over the emphasis "
+        std::cout << "  load at " << q(f.load_at, dim::length) << "; mechanical advantage over the emphasis "
                   << fixed2(f.ma_min) << " to " << fixed2(f.ma_max) << " ("
                   << (f.ma_min >= 1 ? "amplifies force" : f.ma_max <= 1 ? "amplifies distance" : "both")
                   << "), along the arm " << fixed2(f.ma_arm_min) << " to " << fixed2(f.ma_arm_max) << "\n";

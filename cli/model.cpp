@@ -131,8 +131,8 @@ Mass mass_of(const ModelOptions& o, const MassProperties& p) {
 }
 
 void print_plane(const SymmetryPlane& s, double diagonal) {
-  std::cout << "    normal " << direction(s.normal) << " through " << format_vector(s.point, dim::length) << ": the reflection "
-            << format_quantity(s.score, dim::length) << " RMS from the surface (" << format_quantity(100 * s.score / diagonal, dim::none)
+  std::cout << "    normal " << direction(s.normal) << " through " << qv(s.point, dim::length) << ": the reflection "
+            << q(s.score, dim::length) << " RMS from the surface (" << format_quantity(100 * s.score / diagonal, dim::none)
             << " % of the diagonal)\n";
 }
 
@@ -144,10 +144,10 @@ void print_section(const modelling::CrossSection& c) {
   }
   const std::string tol = format_quantity(100 * c.tolerance, dim::none) + " % of its diagonal";
   std::cout << "  cross-section on the best plane: area " << format_quantity(c.area * 1e4, dim::none) << " cm^2, "
-            << c.loops.size() << (c.loops.size() == 1 ? " loop" : " loops") << " " << format_quantity(c.perimeter, dim::length)
-            << " long, centre " << format_vector(c.centre, dim::length) << "\n";
+            << c.loops.size() << (c.loops.size() == 1 ? " loop" : " loops") << " " << q(c.perimeter, dim::length)
+            << " long, centre " << qv(c.centre, dim::length) << "\n";
   auto line = [](const modelling::SectionLine& l) {
-    std::cout << "    along " << direction(l.direction) << ": the reflection " << format_quantity(l.score, dim::length)
+    std::cout << "    along " << direction(l.direction) << ": the reflection " << q(l.score, dim::length)
               << " RMS from the boundary (" << format_quantity(100 * l.relative, dim::none) << " % of the diagonal)\n";
   };
   if (c.lines.empty()) {
@@ -185,26 +185,26 @@ void print_text(const ModelOptions& o, const TriangleMesh& mesh, const MassPrope
   const double diagonal = (modelling::box_max(mesh) - modelling::box_min(mesh)).norm();
   std::cout << "model of " << mesh.file << ": " << mesh.triangles.size() << " triangles, " << mesh.vertices.size()
             << " vertices" << (o.unit.empty() ? " (in metres, as the file says)" : " (in " + o.unit + ")") << "\n";
-  std::cout << "  box " << format_vector(modelling::box_min(mesh), dim::length) << " to " << format_vector(modelling::box_max(mesh), dim::length)
-            << ", diagonal " << format_quantity(diagonal, dim::length) << "\n";
+  std::cout << "  box " << qv(modelling::box_min(mesh), dim::length) << " to " << qv(modelling::box_max(mesh), dim::length)
+            << ", diagonal " << q(diagonal, dim::length) << "\n";
   if (p.exact) {
     std::cout << "  closed and oriented: volume exact from the surface"
               << (p.turned_out ? " (its triangles face inward; taken as the solid they bound)" : "") << "\n";
   } else {
-    std::cout << "  not closed (" << p.open_because << "): volume from voxels of " << format_quantity(p.voxel_size, dim::length)
+    std::cout << "  not closed (" << p.open_because << "): volume from voxels of " << q(p.voxel_size, dim::length)
               << " (those the surface crosses count half)\n";
   }
   std::cout << "  volume " << format_quantity(p.volume * 1e6, dim::none) << " cm^3, surface "
             << format_quantity(p.surface * 1e4, dim::none) << " cm^2\n";
-  std::cout << "  centre of the volume " << format_vector(p.centroid, dim::length) << "\n";
+  std::cout << "  centre of the volume " << qv(p.centroid, dim::length) << "\n";
   if (mass.kg > 0) {
-    std::cout << "  mass " << format_quantity(mass.kg, dim::mass) << " (from " << mass.from << "; density "
+    std::cout << "  mass " << q(mass.kg, dim::mass) << " (from " << mass.from << "; density "
               << format_quantity(mass.density, dim::none) << " kg/m^3)\n";
     const Eigen::Matrix3d inertia = modelling::inertia_about(p, mass.kg, p.centroid);
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(inertia);
-    std::cout << "  centre of gravity " << format_vector(p.centroid, dim::length) << "; principal moments about it:\n";
+    std::cout << "  centre of gravity " << qv(p.centroid, dim::length) << "; principal moments about it:\n";
     for (int k = 0; k < 3; ++k) {
-      std::cout << "    " << format_quantity(eig.eigenvalues()[k], dim::inertia) << " about " << direction(eig.eigenvectors().col(k))
+      std::cout << "    " << q(eig.eigenvalues()[k], dim::inertia) << " about " << direction(eig.eigenvectors().col(k))
                 << "\n";
     }
   } else {
@@ -244,12 +244,12 @@ const modelling::RestingFace* functioning_face(const modelling::RestingPoses& po
 
 void print_resting(const modelling::RestingPoses& poses, const Symmetry& sym) {
   auto face = [](const modelling::RestingFace& f) {
-    return "down " + direction(f.down) + " (gravity in the mesh's frame), the centre " + format_quantity(f.height, dim::length) +
-           " above the face, " + format_quantity(f.margin, dim::length) + " inside its nearest edge";
+    return "down " + direction(f.down) + " (gravity in the mesh's frame), the centre " + q(f.height, dim::length) +
+           " above the face, " + q(f.margin, dim::length) + " inside its nearest edge";
   };
   std::cout << "  rests on " << poses.faces.size() << (poses.faces.size() == 1 ? " face" : " faces")
             << " of its convex hull (" << poses.hull_corners << " corners";
-  if (poses.hull_outside > 0) std::cout << "; vertices up to " << format_quantity(poses.hull_outside, dim::length) << " outside it";
+  if (poses.hull_outside > 0) std::cout << "; vertices up to " << q(poses.hull_outside, dim::length) << " outside it";
   std::cout << ")\n";
   if (poses.faces.empty()) return;
   std::cout << "    most stable: " << face(poses.faces.front()) << "\n";
@@ -383,21 +383,21 @@ modelling::ToolModelOptions tool_options(const ModelOptions& o) {
   return t;
 }
 
-std::string region_text(const RangeSpec& r) { return format_quantity(r.from, dim::length) + " to " + format_quantity(r.to, dim::length); }
+std::string region_text(const RangeSpec& r) { return q(r.from, dim::length) + " to " + q(r.to, dim::length); }
 
 void print_lever(const modelling::UrdfTool& tool, const modelling::LeverGeometry& l) {
   std::cout << "  lever (the object frame: the hinge at the origin along +z, the fixed arm along +x):\n";
-  std::cout << "    the parts meet at joint angle " << format_quantity(0.0 - l.theta_at_zero * l.joint_sign + 0.0, dim::angle)
-            << " (opening 0 deg); the joint's limits open it from " << format_quantity(l.theta_min, dim::angle) << " to "
-            << format_quantity(l.theta_max, dim::angle)
+  std::cout << "    the parts meet at joint angle " << q(0.0 - l.theta_at_zero * l.joint_sign + 0.0, dim::angle)
+            << " (opening 0 deg); the joint's limits open it from " << q(l.theta_min, dim::angle) << " to "
+            << q(l.theta_max, dim::angle)
             << (l.closes_on_contact ? " (the lower limit closes it further: theta_min is where the parts meet)" : "")
             << "\n";
   double widest = 0, at = 0;
   for (const modelling::GapBin& b : l.gap) {
     if (b.angle > widest) widest = b.angle, at = 0.5 * (b.from + b.to);
   }
-  std::cout << "    gap between the closed parts along the arm: 0 deg where they meet, up to " << format_quantity(widest, dim::angle)
-            << " at " << format_quantity(at, dim::length) << "\n";
+  std::cout << "    gap between the closed parts along the arm: 0 deg where they meet, up to " << q(widest, dim::angle)
+            << " at " << q(at, dim::length) << "\n";
   std::cout << "    pattern " << pattern_name(l.pattern) << ": jaws (application) " << region_text(l.application)
             << (l.application_found ? " (where the gap is smallest)" : " (as given)") << ", handle (emphasis) "
             << region_text(l.emphasis) << (l.emphasis_found ? " (the other end from the jaws)" : " (as given)")
@@ -406,48 +406,48 @@ void print_lever(const modelling::UrdfTool& tool, const modelling::LeverGeometry
 }
 
 void print_model(const modelling::ToolModel& m) {
-  std::cout << "  the tool at rest (" << format_quantity(m.rest, dim::angle) << "): mass " << format_quantity(m.mass(), dim::mass) << " (from "
-            << m.mass_from << "), centre of gravity " << format_vector(m.centre_of_gravity, dim::length)
-            << ", the moving part's inertia about the hinge " << format_quantity(m.arm_inertia, dim::inertia) << "\n";
+  std::cout << "  the tool at rest (" << q(m.rest, dim::angle) << "): mass " << q(m.mass(), dim::mass) << " (from "
+            << m.mass_from << "), centre of gravity " << qv(m.centre_of_gravity, dim::length)
+            << ", the moving part's inertia about the hinge " << q(m.arm_inertia, dim::inertia) << "\n";
   std::cout << "  plane of symmetry" << (m.symmetry.planes.empty() ? " (none within the tolerance; the nearest)" : "")
-            << ": normal " << direction(m.plane.normal) << " through " << format_vector(m.plane.point, dim::length)
-            << ", the reflection " << format_quantity(m.plane.score, dim::length) << " RMS from the surface\n";
+            << ": normal " << direction(m.plane.normal) << " through " << qv(m.plane.point, dim::length)
+            << ", the reflection " << q(m.plane.score, dim::length) << " RMS from the surface\n";
   if (!m.resting.faces.empty()) {
     const modelling::RestingFace& f = m.resting.faces.front();
     std::cout << "  rests most stably on: down " << direction(f.down) << " (object frame), the centre "
-              << format_quantity(f.height, dim::length) << " above the face, " << format_quantity(f.margin, dim::length) << " inside its nearest edge\n";
+              << q(f.height, dim::length) << " above the face, " << q(f.margin, dim::length) << " inside its nearest edge\n";
   }
   std::cout << "  for functioning (the plane of symmetry parallel to gravity, Sec. 4.4): rotation ["
-            << format_quantity(m.pose_rotation.x(), dim::angle) << ", " << format_quantity(m.pose_rotation.y(), dim::angle) << ", "
-            << format_quantity(m.pose_rotation.z(), dim::angle) << "]\n";
+            << q(m.pose_rotation.x(), dim::angle) << ", " << q(m.pose_rotation.y(), dim::angle) << ", "
+            << q(m.pose_rotation.z(), dim::angle) << "]\n";
   int fixed = 0;
   for (const modelling::ConvexPart& p : m.parts) fixed += p.arm == Arm::fixed;
   std::cout << "  contact geometry: " << m.parts.size() << " convex parts (" << fixed << " fixed, "
             << m.parts.size() - fixed << " moving)\n";
   const modelling::JawGaps& j = m.jaws;
   std::cout << "  interaction space (L_is) from the shape: the gap between the jaws, mm, at " << j.distances.size()
-            << " places from " << format_quantity(j.distances.front(), dim::length) << " to " << format_quantity(j.distances.back(), dim::length)
+            << " places from " << q(j.distances.front(), dim::length) << " to " << q(j.distances.back(), dim::length)
             << " along the arm:\n";
   for (size_t a = 0; a < j.angles.size(); ++a) {
-    std::cout << "    opening " << format_quantity(j.angles[a], dim::angle) << ":";
+    std::cout << "    opening " << q(j.angles[a], dim::angle) << ":";
     for (size_t k = 0; k < j.gap[a].size(); ++k) {
       const double gap = j.gap[a][k] < 1e-9 ? 0.0 : j.gap[a][k];  // m: closed jaws meet to rounding
       std::cout << (k == 0 ? " " : ", ") << format_quantity(gap * 1e3, dim::none);
     }
     std::cout << "\n";
   }
-  std::cout << "    fully open the shape's jaws are " << format_quantity(j.gap_from(), dim::length) << " to " << format_quantity(j.gap_to(), dim::length)
+  std::cout << "    fully open the shape's jaws are " << q(j.gap_from(), dim::length) << " to " << q(j.gap_to(), dim::length)
             << " apart (the object file's interaction_space: what guide and explore fit actees in); the wedge of "
                "flat jaws through the pivot (|r| sin theta_max) would be "
-            << format_quantity(j.wedge_from, dim::length) << " to " << format_quantity(j.wedge_to, dim::length) << "\n";
+            << q(j.wedge_from, dim::length) << " to " << q(j.wedge_to, dim::length) << "\n";
   auto face = [](const char* what, const modelling::FacePlane& f) {
     std::cout << "    " << what << ": ";
     if (!f.found) {
-      std::cout << "none (the part has no outline from " << format_quantity(f.from, dim::length) << " to " << format_quantity(f.to, dim::length) << ")\n";
+      std::cout << "none (the part has no outline from " << q(f.from, dim::length) << " to " << q(f.to, dim::length) << ")\n";
       return;
     }
-    std::cout << "normal " << direction(f.normal) << " through " << format_vector(f.point, dim::length) << ", from "
-              << format_quantity(f.from, dim::length) << " to " << format_quantity(f.to, dim::length) << ", the face " << format_quantity(f.rms < 1e-9 ? 0.0 : f.rms, dim::length)  // m: flat to rounding
+    std::cout << "normal " << direction(f.normal) << " through " << qv(f.point, dim::length) << ", from "
+              << q(f.from, dim::length) << " to " << q(f.to, dim::length) << ", the face " << q(f.rms < 1e-9 ? 0.0 : f.rms, dim::length)  // m: flat to rounding
               << " RMS off flat\n";
   };
   std::cout << "  contact planes (L_cp, the handles' outer faces) and the support plane (the fixed jaw's face):\n";
@@ -455,9 +455,9 @@ void print_model(const modelling::ToolModel& m) {
   face("moving handle (its arm's frame)", m.faces.moving_contact);
   face("support (object frame)", m.faces.support);
   if (m.spring) {
-    std::cout << "  spring: " << format_quantity(m.spring->constant, dim::stiffness) << " at " << format_quantity(m.spring->position, dim::length)
-              << (m.spring->rest_length > 0 ? ", free length " + format_quantity(m.spring->rest_length, dim::length)
-                                            : ", preload " + format_quantity(m.spring->preload, dim::force))
+    std::cout << "  spring: " << q(m.spring->constant, dim::stiffness) << " at " << q(m.spring->position, dim::length)
+              << (m.spring->rest_length > 0 ? ", free length " + q(m.spring->rest_length, dim::length)
+                                            : ", preload " + q(m.spring->preload, dim::force))
               << "\n";
   } else {
     std::cout << "  spring: none (a URDF or a mesh has none): give --spring K_N_M_PER_RAD,REST_DEG, or fit one with afford "
@@ -578,28 +578,28 @@ int model_two_part(const ModelOptions& o) {
   } else {
     std::cout << "model of " << o.file << ": joint '" << tool.joint << "' turns link '" << tool.moving_link
               << "' (moving) against '" << tool.fixed_link << "' (fixed); in the fixed link's frame, the joint at 0:\n";
-    std::cout << "  hinge through " << format_vector(tool.hinge_point, dim::length) << " about " << direction(tool.hinge_axis);
+    std::cout << "  hinge through " << qv(tool.hinge_point, dim::length) << " about " << direction(tool.hinge_axis);
     if (tool.limited) {
-      std::cout << ", from " << format_quantity(tool.lower, dim::angle) << " to " << format_quantity(tool.upper, dim::angle) << "\n";
+      std::cout << ", from " << q(tool.lower, dim::angle) << " to " << q(tool.upper, dim::angle) << "\n";
     } else {
       std::cout << ", continuous (no limits)\n";
     }
     for (const UrdfPart& part : parts) {
       std::cout << "  " << part.name << " part: " << part.mesh->triangles.size() << " triangles, "
-                << (part.p.exact ? "closed" : "not closed (voxels of " + format_quantity(part.p.voxel_size, dim::length) + ")")
+                << (part.p.exact ? "closed" : "not closed (voxels of " + q(part.p.voxel_size, dim::length) + ")")
                 << ", volume " << format_quantity(part.p.volume * 1e6, dim::none) << " cm^3, centre "
-                << format_vector(part.p.centroid, dim::length) << "\n";
+                << qv(part.p.centroid, dim::length) << "\n";
       if (part.kg > 0) {
         const Eigen::Matrix3d I = modelling::inertia_about(part.p, part.kg, tool.hinge_point);
-        std::cout << "    mass " << format_quantity(part.kg, dim::mass) << ", inertia about the hinge "
-                  << format_quantity(tool.hinge_axis.dot(I * tool.hinge_axis), dim::inertia) << "\n";
+        std::cout << "    mass " << q(part.kg, dim::mass) << ", inertia about the hinge "
+                  << q(tool.hinge_axis.dot(I * tool.hinge_axis), dim::inertia) << "\n";
       }
     }
     if (parts[0].kg > 0) {
       const Eigen::Vector3d centre = (parts[0].kg * parts[0].p.centroid + parts[1].kg * parts[1].p.centroid) /
                                      (parts[0].kg + parts[1].kg);
-      std::cout << "  the tool: mass " << format_quantity(parts[0].kg + parts[1].kg, dim::mass) << ", centre of gravity "
-                << format_vector(centre, dim::length) << "\n";
+      std::cout << "  the tool: mass " << q(parts[0].kg + parts[1].kg, dim::mass) << ", centre of gravity "
+                << qv(centre, dim::length) << "\n";
     } else if (!has_mass) {
       std::cout << "  mass: give --mass G (shared by volume) or --density KG_M3\n";
     }

@@ -1,5 +1,6 @@
-// A vector printed as the commands print quantities: "[x, y, z]", each in
-// the dimension's display unit (units.h).
+// How the commands print quantities, shortened because their reports use
+// them on every line: q(si, dim) is format_quantity (units.h), in the
+// dimension's display unit; qv a vector as "[x, y, z]".
 #pragma once
 
 #include <Eigen/Core>
@@ -9,8 +10,10 @@
 
 namespace afford::cli {
 
-inline std::string format_vector(const Eigen::Vector3d& v, const Dimension& d) {
-  return "[" + format_quantity(v.x(), d) + ", " + format_quantity(v.y(), d) + ", " + format_quantity(v.z(), d) + "]";
+inline std::string q(double si, const Dimension& d) { return format_quantity(si, d); }
+
+inline std::string qv(const Eigen::Vector3d& v, const Dimension& d) {
+  return "[" + q(v.x(), d) + ", " + q(v.y(), d) + ", " + q(v.z(), d) + "]";
 }
 
 }  // namespace afford::cli

@@ -36,22 +36,6 @@ using modelling::LeverGeometry;
 using modelling::ToolModel;
 
 
-// A folder of the temporary directory, removed afterwards.
-class ToolsDir {
- public:
-  explicit ToolsDir(const std::string& name)
-      : path_(fs::temp_directory_path() / ("afford_tools_" + std::to_string(::getpid()) + "_" + name)) {
-    fs::create_directories(path_);
-  }
-  ~ToolsDir() { fs::remove_all(path_); }
-  ToolsDir(const ToolsDir&) = delete;
-  ToolsDir& operator=(const ToolsDir&) = delete;
-  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  fs::path path_;
-};
-
 void write(const std::string& path, const std::string& text) {
   fs::create_directories(fs::path(path).parent_path());
   std::ofstream(path, std::ios::binary) << text;
@@ -65,9 +49,9 @@ enum class Regions { given, from_shape };
 // cannot carry taken from the original: the spring and the functional
 // pose's rotation, as the exported file's comment says, and the regions
 // where `regions` says so.
-ToolModel round_trip(const ObjectSpec& original, const ToolsDir& dir, Regions regions = Regions::given) {
-  for (const modelling::ExportedFile& f : modelling::urdf_export(original)) write(dir / f.path, f.text);
-  const modelling::UrdfTool tool = modelling::read_urdf_tool(dir / (original.name + ".urdf"));
+ToolModel round_trip(const ObjectSpec& original, const TempDir& dir, Regions regions = Regions::given) {
+  for (const modelling::ExportedFile& f : modelling::urdf_export(original)) write(dir.at(f.path), f.text);
+  const modelling::UrdfTool tool = modelling::read_urdf_tool(dir.at(original.name + ".urdf"));
   modelling::ToolModelOptions o;
   o.name = original.name + "-modelled";
   const double sp = std::abs(original.spring.position);
@@ -103,7 +87,7 @@ TEST(ModelTool, ThePliersHandlesOuterFacesAreTheirContactPlanes) {
   // the emphasis, -130..-60 mm: y = 14 mm facing +y, y = -14 mm facing -y,
   // through the emphasis's middle, -95 mm.
   const ObjectSpec original = load_object(kSource + "/objects/pliers.yaml");
-  const ToolsDir dir("pliers-faces");
+  const TempDir dir;
   const ToolModel m = round_trip(original, dir);
   const modelling::FacePlane& f = m.faces.fixed_contact;
   const modelling::FacePlane& g = m.faces.moving_contact;
@@ -119,7 +103,7 @@ TEST(ModelTool, ThePliersHandlesOuterFacesAreTheirContactPlanes) {
 TEST_P(RoundTrip, TheToolComesBackFromItsUrdf) {
   const Shipped& tool = GetParam();
   const ObjectSpec original = load_object(kSource + "/objects/" + tool.name + ".yaml");
-  const ToolsDir dir(tool.name);
+  const TempDir dir;
   // The regions from the shape where it tells them (the pliers: figures in
   // ThePliersJawsAndHandleComeFromTheirShape); two plain bars cannot
   // (TwoPlainBarsCannotTellJawsFromHandle), and get them as the error asks.
@@ -181,7 +165,7 @@ TEST_P(RoundTrip, TheToolComesBackFromItsUrdf) {
   ASSERT_TRUE(faces.moving_contact.found);
 
   // The written file loads, and says the same.
-  const std::string file = dir / "modelled.yaml";
+  const std::string file = dir.at("modelled.yaml");
   write(file, modelling::object_yaml(m));
   const ObjectSpec back = load_object(file);
   EXPECT_EQ(back.lever.pattern, original.lever.pattern);
@@ -214,7 +198,7 @@ class PlainBars : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PlainBars, TwoPlainBarsCannotTellJawsFromHandle) {
   const ObjectSpec original = load_object(kSource + "/objects/" + GetParam() + ".yaml");
-  const ToolsDir dir(GetParam() + "-bars");
+  const TempDir dir;
   const std::string error = thrown<DataError>([&] { (void)round_trip(original, dir, Regions::from_shape); });
   EXPECT_THAT(error, ::testing::HasSubstr(GetParam() + ".urdf: expected jaws told apart from the handle by the gap "
                                                         "between the parts (smallest where the jaws meet), found a "
@@ -234,7 +218,7 @@ INSTANTIATE_TEST_SUITE_P(ShippedTools, PlainBars, ::testing::Values("nutcracker"
 // designer's choice the shape does not hold.
 TEST(RoundTripRegions, ThePliersJawsAndHandleComeFromTheirShape) {
   const ObjectSpec original = load_object(kSource + "/objects/pliers.yaml");
-  const ToolsDir dir("pliers-regions");
+  const TempDir dir;
   const LeverGeometry l = round_trip(original, dir, Regions::from_shape).lever;
   EXPECT_EQ(l.pattern, LeverPattern::type1_power);
   EXPECT_NEAR(l.application.from, -0.140 + 169 * 0.182 / 200, 0.1e-3);
@@ -251,9 +235,9 @@ class RoundTripGuide : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RoundTripGuide, FitsTheSameActeesAtTheSamePlaces) {
   const ObjectSpec original = load_object(kSource + "/objects/" + GetParam() + ".yaml");
-  const ToolsDir dir(GetParam() + "-guide");
-  write(dir / "modelled.yaml", modelling::object_yaml(round_trip(original, dir)));
-  const ObjectSpec modelled = load_object(dir / "modelled.yaml");
+  const TempDir dir;
+  write(dir.at("modelled.yaml"), modelling::object_yaml(round_trip(original, dir)));
+  const ObjectSpec modelled = load_object(dir.at("modelled.yaml"));
   ASSERT_FALSE(modelled.interaction_space.distances.empty());
   std::vector<ActeeSpec> actees;
   for (const char* a : {"coconut", "egg", "hazelnut", "ice_cube", "macadamia", "peanut", "pecan", "sponge", "walnut"}) {
@@ -290,9 +274,9 @@ class RoundTripSession : public ::testing::TestWithParam<std::pair<std::string, 
 
 TEST_P(RoundTripSession, InfersTheSameFunctions) {
   const auto& [session_name, tool] = GetParam();
-  const ToolsDir dir(session_name);
+  const TempDir dir;
   const ObjectSpec original = load_object(kSource + "/objects/" + tool + ".yaml");
-  const std::string modelled = dir / "modelled.yaml";
+  const std::string modelled = dir.at("modelled.yaml");
   write(modelled, modelling::object_yaml(round_trip(original, dir)));
 
   const std::string path = kSource + "/sessions/" + session_name + ".yaml";
@@ -400,9 +384,9 @@ TEST(ModelPartNet, AFileWithoutASpringSaysHowToGetOne) {
   o.density = 7850;
   const ToolModel m =
       modelling::model_tool(modelling::read_urdf_tool(kSource + "/tests/data/partnet/stapler/mobility.urdf"), o);
-  const ToolsDir dir("spring");
-  write(dir / "stapler.yaml", modelling::object_yaml(m));
-  const std::string error = thrown<DataError>([&] { (void)load_object(dir / "stapler.yaml"); });
+  const TempDir dir;
+  write(dir.at("stapler.yaml"), modelling::object_yaml(m));
+  const std::string error = thrown<DataError>([&] { (void)load_object(dir.at("stapler.yaml")); });
   EXPECT_THAT(error, ::testing::HasSubstr("stapler.yaml:"));
   EXPECT_THAT(error, ::testing::HasSubstr("expected key 'spring' in an object file"));
   EXPECT_THAT(error, ::testing::HasSubstr("--spring K_N_M_PER_RAD,REST_DEG"));
@@ -413,8 +397,8 @@ TEST(ModelPartNet, AFileWithoutASpringSaysHowToGetOne) {
   o.spring = modelling::SpringGiven{0.5, 40 * kDeg, std::nullopt};
   const ToolModel sprung =
       modelling::model_tool(modelling::read_urdf_tool(kSource + "/tests/data/partnet/stapler/mobility.urdf"), o);
-  write(dir / "sprung.yaml", modelling::object_yaml(sprung));
-  const ObjectSpec back = load_object(dir / "sprung.yaml");
+  write(dir.at("sprung.yaml"), modelling::object_yaml(sprung));
+  const ObjectSpec back = load_object(dir.at("sprung.yaml"));
   const double sp = std::abs(back.spring.position);
   EXPECT_NEAR(sp, sprung.lever.emphasis.middle(), 1e-6);
   EXPECT_NEAR(back.spring.constant * sp * sp, 0.5, 1e-6);
@@ -482,46 +466,46 @@ TEST(ModelToolErrors, EachSaysWhatTheShapeLacks) {
 }
 
 TEST(ModelToolErrors, ABadInertialIsLocatedAtItsLink) {
-  const ToolsDir dir("inertial");
-  write(dir / "t.urdf", R"(<robot name="t">
+  const TempDir dir;
+  write(dir.at("t.urdf"), R"(<robot name="t">
   <link name="a"><inertial><mass value="-1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>
     <collision><geometry><box size="0.1 0.01 0.008"/></geometry></collision></link>
   <link name="b"><collision><geometry><box size="0.1 0.01 0.008"/></geometry></collision></link>
   <joint name="j" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/>
     <limit lower="0" upper="0.5" effort="1" velocity="1"/></joint>
 </robot>)");
-  EXPECT_THAT(thrown<DataError>([&] { (void)modelling::read_urdf_tool(dir / "t.urdf"); }),
+  EXPECT_THAT(thrown<DataError>([&] { (void)modelling::read_urdf_tool(dir.at("t.urdf")); }),
               ::testing::HasSubstr("t.urdf:2:3: expected a positive mass and a finite inertia in the <inertial> of link 'a'"));
 }
 
 TEST(ModelToolErrors, JointsTheToolCannotUse) {
-  const ToolsDir dir("joints");
+  const TempDir dir;
   const std::string links = R"(<link name="a"><collision><geometry><box size="0.1 0.01 0.008"/></geometry></collision></link>
   <link name="b"><collision><geometry><box size="0.1 0.01 0.008"/></geometry></collision></link>
   <link name="c"><collision><geometry><box size="0.1 0.01 0.008"/></geometry></collision></link>)";
   const std::string limit = R"(<limit lower="0" upper="0.5" effort="1" velocity="1"/>)";
   // Two hinges and no --links: which pair is the tool?
-  write(dir / "two.urdf", "<robot name=\"t\">\n  " + links + R"(
+  write(dir.at("two.urdf"), "<robot name=\"t\">\n  " + links + R"(
   <joint name="j1" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/>)" + limit + R"(</joint>
   <joint name="j2" type="revolute"><parent link="b"/><child link="c"/><axis xyz="0 0 1"/>)" + limit + R"(</joint>
 </robot>)");
-  EXPECT_THAT(thrown<DataError>([&] { (void)modelling::read_urdf_tool(dir / "two.urdf"); }),
+  EXPECT_THAT(thrown<DataError>([&] { (void)modelling::read_urdf_tool(dir.at("two.urdf")); }),
               ::testing::HasSubstr("two.urdf:1:1: expected one revolute (or continuous) joint, or --links FIXED,MOVING, found 2"));
-  EXPECT_EQ(modelling::read_urdf_tool(dir / "two.urdf", "b", "c").joint, "j2");
+  EXPECT_EQ(modelling::read_urdf_tool(dir.at("two.urdf"), "b", "c").joint, "j2");
   // A friction below zero in the joint's dynamics.
-  write(dir / "friction.urdf", "<robot name=\"t\">\n  " + links + R"(
+  write(dir.at("friction.urdf"), "<robot name=\"t\">\n  " + links + R"(
   <joint name="j1" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/>)" + limit +
                                    R"(<dynamics friction="-1"/></joint>
   <joint name="j2" type="fixed"><parent link="b"/><child link="c"/></joint>
 </robot>)");
-  EXPECT_THAT(thrown<DataError>([&] { (void)modelling::read_urdf_tool(dir / "friction.urdf"); }),
+  EXPECT_THAT(thrown<DataError>([&] { (void)modelling::read_urdf_tool(dir.at("friction.urdf")); }),
               ::testing::HasSubstr("friction.urdf:5:3: expected a friction and a damping of 0 or more in the <dynamics> of joint 'j1'"));
 }
 
 // The export and the model are deterministic: the same text every time.
 TEST(ModelTool, TheFileIsTheSameEveryRun) {
   const ObjectSpec pliers = load_object(kSource + "/objects/pliers.yaml");
-  const ToolsDir dir("det");
+  const TempDir dir;
   const std::string first = modelling::object_yaml(round_trip(pliers, dir));
   EXPECT_EQ(modelling::object_yaml(round_trip(pliers, dir)), first);
 }
