@@ -15,6 +15,7 @@ namespace {
 
 constexpr double kMinExponent = 0.5, kMaxExponent = 4.0;  // the actee's power laws searched
 constexpr int kMaxRounds = 5;   // of the alternating search for a delay and an exponent together
+constexpr int kShiftSteps = 60;  // the grid of a preload's compression shift searched with a progressive spring
 // After its first round, each is searched this far either side of where it was, on a grid of kNearSteps.
 constexpr double kDelayReach = 0.01;     // s
 constexpr double kExponentReach = 0.25;
@@ -180,6 +181,23 @@ void Fitter::columns(size_t i, const std::vector<EffectKind>& linear, const Nonl
     if (k == EffectKind::gravity && !arm_weight_[i].empty()) {
       for (size_t j = 0; j < base->size(); ++j) (*base)[j] += arm_weight_[i][j];
     }
+    if (k == EffectKind::progressive_spring && nl.compression_shift != 0) {
+      // The cubic at the shifted compression; the file's own cubic moves
+      // with it in the base.
+      const double ds = std::abs(model_.spring_position);
+      for (size_t j = 0; j < base->size(); ++j) {
+        const double d = std::max(0.0, spring_compression(model_, r.x[j]));
+        const double shifted = std::max(0.0, d + nl.compression_shift);
+        cols->back()[j] = shifted * shifted * shifted * ds;
+        (*base)[j] += model_.spring_cubic * (shifted * shifted * shifted - d * d * d) * ds;
+      }
+    }
+  }
+  // The preload that makes the shift, where it is not a column of its own
+  // (Fitter::fit searches it): k times the shift, at the spring's arm.
+  if (nl.compression_shift != 0 && std::find(linear.begin(), linear.end(), EffectKind::spring_preload) == linear.end()) {
+    const double torque = model_.spring_constant * nl.compression_shift * std::abs(model_.spring_position);
+    for (double& v : *base) v += torque;
   }
   if (nl.exponent > 0) {
     const std::vector<double>& own = own_actee_[i];
@@ -200,10 +218,11 @@ void Fitter::columns(size_t i, const std::vector<EffectKind>& linear, const Nonl
 struct SumsKey {
   size_t replay = 0;
   std::vector<EffectKind> linear;
-  double delay = 0, exponent = 0;
+  double delay = 0, exponent = 0, shift = 0;
   int what = 0;  // 0: the linear columns' sums, 1: with the power law's column, 2: the power law's row
   bool operator<(const SumsKey& o) const {
-    return std::tie(replay, linear, delay, exponent, what) < std::tie(o.replay, o.linear, o.delay, o.exponent, o.what);
+    return std::tie(replay, linear, delay, exponent, shift, what) <
+           std::tie(o.replay, o.linear, o.delay, o.exponent, o.shift, o.what);
   }
 };
 
@@ -224,7 +243,7 @@ Fitter::Sums Fitter::accumulate(const std::vector<size_t>& on, const std::vector
     std::optional<Sums> own;
     const Sums* sums = nullptr;
     if (cache_ && on_grid) {
-      const SumsKey key{i, linear, nl.delay, nl.exponent, power_law_column ? 1 : 0};
+      const SumsKey key{i, linear, nl.delay, nl.exponent, nl.compression_shift, power_law_column ? 1 : 0};
       auto found = cache_->entries_->sums.find(key);
       if (found == cache_->entries_->sums.end()) {
         found = cache_->entries_->sums.emplace(key, replay_sums(i, linear, nl, power_law_column)).first;
@@ -313,7 +332,7 @@ Fitter::Sums Fitter::add_power_law(const Sums& linear_sums, const std::vector<si
     std::optional<Sums> own;
     const Sums* row = nullptr;
     if (cache_ && on_grid) {
-      const SumsKey key{i, linear, 0.0, exponent, 2};
+      const SumsKey key{i, linear, 0.0, exponent, 0.0, 2};
       auto found = cache_->entries_->sums.find(key);
       if (found == cache_->entries_->sums.end()) {
         found = cache_->entries_->sums.emplace(key, power_law_row(i, linear, exponent)).first;
@@ -436,12 +455,13 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
   // The linear columns' sums while the power law's exponent is searched
   // without a delay: they do not change with it.
   std::optional<Sums> linear_sums;
+  std::vector<EffectKind> fitted_linear = linear;  // those solved for: all but a preload searched as a shift
   auto train_rss = [&](const Nonlinear& nl, bool on_grid = false) {
-    if (nl.exponent > 0 && nl.delay == 0) {
-      if (!linear_sums) linear_sums = accumulate(train_, linear, nl, false);
-      return solve(add_power_law(*linear_sums, train_, linear, nl.exponent, on_grid), &coef, &sigma, &n, &w);
+    if (nl.exponent > 0 && nl.delay == 0 && nl.compression_shift == 0) {
+      if (!linear_sums) linear_sums = accumulate(train_, fitted_linear, nl, false);
+      return solve(add_power_law(*linear_sums, train_, fitted_linear, nl.exponent, on_grid), &coef, &sigma, &n, &w);
     }
-    return solve(accumulate(train_, linear, nl, true, on_grid), &coef, &sigma, &n, &w);
+    return solve(accumulate(train_, fitted_linear, nl, true, on_grid), &coef, &sigma, &n, &w);
   };
   Nonlinear best;
   // A search's grid is the same in every fit: its points' sums are kept.
@@ -481,14 +501,50 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
     }
     if (std::abs(best.delay - was.delay) < kDelaySettled && std::abs(best.exponent - was.exponent) < kExponentSettled) break;
   }
+  // A preload and a progressive spring together: the cubic acts on the
+  // whole compression (terms.cpp), so a change of preload dp shifts the
+  // cubic's column by dp / k. Fitted as a search over that shift, the
+  // preload's change k times it (in the base, columns()), about where the
+  // fit taken at the nominal compression puts it; its standard error
+  // from the curvature, as a delay's.
+  const auto preload_at = std::find(linear.begin(), linear.end(), EffectKind::spring_preload);
+  const bool shifts = preload_at != linear.end() && model_.spring_constant > 0 &&
+                      std::find(linear.begin(), linear.end(), EffectKind::progressive_spring) != linear.end();
+  const auto at = static_cast<size_t>(preload_at - linear.begin());
+  if (shifts) {
+    train_rss(best);
+    const double unshifted = coef[at] / model_.spring_constant;  // m
+    double deepest = 0;  // m, the most the spring is compressed in the fitted samples
+    for (size_t i : train_) {
+      for (size_t s : fitted_[i]) deepest = std::max(deepest, spring_compression(model_, replays_[i].x[s]));
+    }
+    const double reach = 2 * (std::abs(unshifted) + deepest);
+    fitted_linear.erase(fitted_linear.begin() + static_cast<std::ptrdiff_t>(at));
+    best.compression_shift = minimise(
+        [&](double x, bool) { return train_rss(Nonlinear{best.delay, best.exponent, x}); }, unshifted - reach,
+        unshifted + reach, kShiftSteps);
+  }
   const double rss_train = train_rss(best);
-  const std::vector<double> best_coef = coef, best_sigma = sigma;
+  std::vector<double> best_coef = coef, best_sigma = sigma;
+  if (shifts) {
+    // The shift's standard error from the curvature about it (as
+    // curvature_sigma below, on either side: a shift may be negative).
+    const double h = 1e-6;  // m
+    const size_t dof = n > best_coef.size() + 1 ? n - best_coef.size() - 1 : 0;
+    const double s2 = dof > 0 ? rss_train / static_cast<double>(dof) : 0.0;
+    auto at_shift = [&](double x) { return train_rss(Nonlinear{best.delay, best.exponent, x}); };
+    const double second = (at_shift(best.compression_shift + h) - 2 * rss_train + at_shift(best.compression_shift - h)) / (h * h);
+    const double shift_sigma = second > 0 ? std::sqrt(2 * s2 / second) : std::numeric_limits<double>::infinity();
+    best_coef.insert(best_coef.begin() + static_cast<std::ptrdiff_t>(at), model_.spring_constant * best.compression_shift);
+    best_sigma.insert(best_sigma.begin() + static_cast<std::ptrdiff_t>(at), model_.spring_constant * shift_sigma);
+  }
 
   SetFit out;
   out.linear = linear;
   out.coef = best_coef;
   out.delay = best.delay;
   out.exponent = best.exponent;
+  out.compression_shift = best.compression_shift;
   out.rss_train = rss_train;
   out.n_train = n;
   out.parameters = static_cast<int>(best_coef.size()) + (latency ? 1 : 0) + (compliance ? 1 : 0);
@@ -524,7 +580,7 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
     e.kind = EffectKind::actee_compliance;
     const double c = best_coef.back();  // = reference^(1 - n)
     e.value[0] = best.exponent;
-    e.sigma[0] = curvature_sigma([&](double x) { return Nonlinear{best.delay, x}; }, best.exponent, 0.01);
+    e.sigma[0] = curvature_sigma([&](double x) { return Nonlinear{best.delay, x, best.compression_shift}; }, best.exponent, 0.01);
     if (!(c > 0)) out.valid = false;
     // A law that is linear has no reference; 1 mm stands for any.
     e.value[1] = std::abs(best.exponent - 1) < 1e-6 || !(c > 0) ? 1e-3 : std::pow(c, 1 / (1 - best.exponent));
@@ -538,7 +594,7 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
     EffectFit e;
     e.kind = EffectKind::sensor_latency;
     e.value[0] = best.delay;
-    e.sigma[0] = curvature_sigma([&](double x) { return Nonlinear{x, best.exponent}; }, best.delay, 5e-4);
+    e.sigma[0] = curvature_sigma([&](double x) { return Nonlinear{x, best.exponent, best.compression_shift}; }, best.delay, 5e-4);
     out.effects.push_back(e);
   }
   return out;
@@ -592,7 +648,7 @@ double Fitter::shared_exponent(const std::vector<size_t>& on, bool own_zeros) co
 std::vector<double> Fitter::residual(const SetFit& fit, size_t i) const {
   std::vector<double> base;
   std::vector<std::vector<double>> cols;
-  columns(i, fit.linear, Nonlinear{fit.delay, fit.exponent}, &base, &cols);
+  columns(i, fit.linear, Nonlinear{fit.delay, fit.exponent, fit.compression_shift}, &base, &cols);
   const Replay& r = replays_[i];
   std::vector<double> out(base.size(), 0.0);
   for (size_t s = 0; s < base.size(); ++s) {

@@ -43,6 +43,7 @@ struct SetFit {
   std::vector<double> coef;        // their fitted changes, then the power law's coefficient if any
   double delay = 0;                // s
   double exponent = 0;             // 0: the actee's own law
+  double compression_shift = 0;    // m, with a preload and a progressive spring fitted together (Fitter::Nonlinear)
 };
 
 // Each replay's sums of the normal equations at the delays and exponents
@@ -113,6 +114,11 @@ class Fitter {
   struct Nonlinear {
     double delay = 0;      // s
     double exponent = 0;   // 0: the model's own actee law
+    // m: how much further the spring is compressed than the nominal's, a
+    // fitted preload's (its change over the spring constant): a
+    // progressive spring's cubic acts on the whole compression
+    // (terms.cpp), so a preload moves its column.
+    double compression_shift = 0;
   };
   // Prediction columns of replay i: the nominal, and one per linear effect
   // (and the actee's power law when exponent > 0), delayed by `delay`.

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -139,16 +140,6 @@ struct Case {
   JawScene jaws;
 };
 
-// Draws a case from its seed (std::mt19937): the tool (a shipped one, or a
-// new geometry written into `cases_dir` as an object file), the actee and
-// its scenario, the drives, the sensors, the hand and the truth. SOURCE is
-// the repository (objects/, actees/, agents/).
-Case draw_case(const std::filesystem::path& source, const std::filesystem::path& cases_dir, unsigned seed);
-
-// The label the scorer reads: the true names joined by '+', sorted;
-// "none"; or "outside:NAME".
-std::string label_of(const Case& c);
-
 // One 1 kHz sample of a played drive, as the sensors read it.
 struct Measured {
   double t = 0;        // s
@@ -157,5 +148,21 @@ struct Measured {
   double actee = 0;    // N, the load cell under the actee (0 without one)
   bool broken = false; // the actee has given way
 };
+
+// One drive of a case played by a reality (Reality::play with any noise
+// seed): what a sensor's latency is sized on (design.cpp).
+using PlayDrive = std::function<std::vector<Measured>(const Case&, const Drive&)>;
+
+// Draws a case from its seed (std::mt19937): the tool (a shipped one, or a
+// new geometry written into `cases_dir` as an object file), the actee and
+// its scenario, the drives, the sensors, the hand and the truth. SOURCE is
+// the repository (objects/, actees/, agents/). A latency is sized on the
+// effort `play` gives for the case's drives, silent and effect-free.
+Case draw_case(const std::filesystem::path& source, const std::filesystem::path& cases_dir, unsigned seed,
+               const PlayDrive& play);
+
+// The label the scorer reads: the true names joined by '+', sorted;
+// "none"; or "outside:NAME".
+std::string label_of(const Case& c);
 
 }  // namespace gapcheck

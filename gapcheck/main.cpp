@@ -147,7 +147,8 @@ int main(int argc, char** argv) {
     std::optional<PlatesLaw> plates;
     Made m;
     try {
-      c = draw_case(source, out / "cases", seed);
+      c = draw_case(source, out / "cases", seed,
+                    [&reality](const Case& k, const Drive& d) { return reality->play(k, d, d.noise_seed); });
       if (again) {
         m.measurement = out / "cases" / (c.name + ".yaml");
         if (!fs::is_regular_file(m.measurement)) throw std::runtime_error("no case " + m.measurement.string());

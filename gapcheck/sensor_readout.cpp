@@ -9,6 +9,14 @@ double quantise(double x, double q) { return q > 0 ? q * std::round(x / q) : x; 
 
 }  // namespace
 
+double at_sample(const std::vector<double>& f, double at) {
+  if (at <= 0) return f.front();
+  const auto i = static_cast<size_t>(at);
+  if (i + 1 >= f.size()) return f.back();
+  const double w = at - static_cast<double>(i);
+  return (1 - w) * f[i] + w * f[i + 1];
+}
+
 SensorReadout::SensorReadout(const Case& c, unsigned noise_seed) : case_(c), random_(noise_seed) {}
 
 Measured SensorReadout::read(int k, double angle, double effort_now, double load, bool broken) {
@@ -16,13 +24,7 @@ Measured SensorReadout::read(int k, double angle, double effort_now, double load
   history_.push_back(effort_now);
   // The effort of `latency` ago, linear between samples; the first sample
   // until then.
-  const double delayed = k - case_.truth.latency * 1000;
-  double effort = history_.front();
-  if (delayed > 0) {
-    const auto i = static_cast<size_t>(delayed);
-    const double w = delayed - static_cast<double>(i);
-    effort = i + 1 < history_.size() ? (1 - w) * history_[i] + w * history_[i + 1] : history_[i];
-  }
+  double effort = at_sample(history_, k - case_.truth.latency * 1000);
   effort = (1 + case_.outside.gain_error) * effort + case_.outside.offset_drift * t;
   // Three draws a sample, always, so that one signal's noise does not
   // shift another's.

@@ -11,6 +11,10 @@
 
 namespace gapcheck {
 
+// f at the fractional sample `at` (f's samples 1 ms apart), linear
+// between samples; f's first sample before it starts, its last after.
+double at_sample(const std::vector<double>& f, double at);
+
 class SensorReadout {
  public:
   SensorReadout(const Case& c, unsigned noise_seed);

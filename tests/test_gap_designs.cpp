@@ -657,6 +657,38 @@ TEST(GapDesigns, FrictionOrDampingAloneThenTheProgressiveSpringDecides) {
   EXPECT_TRUE(names(d, {EffectKind::pivot_friction, EffectKind::progressive_spring})) << report_text(d);
 }
 
+TEST(GapDesigns, AProgressiveSpringIsFittedAtTheCompressionAMorePreloadedSpringHas) {
+  // The spring preloaded with 21.5 N instead of the file's 1.5 N, and
+  // progressive (4e6 N/m^3): the cubic acts on the whole compression,
+  // 0.010 m * (30 deg - theta) + 21.5 N / 2000 N/m = 11.1 to 14.6 mm over
+  // 8 to 28 deg, not the file's 1.1 to 4.6 mm. A cubic fitted at the file's
+  // compression would have to be 30 times as large and would still miss
+  // the shape; at the compression the fitted preload makes, both come out
+  // as written: 0.2 N*m of preload (1.25 N at the effort) and 0.34 to
+  // 0.78 N of cubic. Turned 0 and 90 deg, so the preload is no weight.
+  Truth truth;
+  truth.angle_noise = 1e-4;
+  const auto drive = sine(8 * kDeg, 28 * kDeg, 1.5);
+  const auto spring = [](double, const Motion& m) {
+    const double d = 0.010 * (30 * kDeg - m.theta) + 21.5 / 2000;  // m
+    return 20.0 * 0.010 + 4e6 * d * d * d * 0.010;                  // N*m over the file's spring
+  };
+  const Diagnosis d = diagnose(load_measurement(
+      measurement("preloaded", {{"a.csv", trace(truth, 1, 6, 0, drive, spring)},
+                                {"b.csv,turned: 90 deg", trace(truth, 2, 6, 90 * kDeg, drive, spring)}})
+          .string()));
+  ASSERT_TRUE(names(d, {EffectKind::spring_preload, EffectKind::progressive_spring})) << report_text(d);
+  EXPECT_NE(d.verdict, Verdict::unexplained) << report_text(d);
+  for (const EffectFit& e : d.effects) {
+    if (e.kind == EffectKind::spring_preload) {
+      EXPECT_NEAR(e.value[0], 21.5, 0.5) << report_text(d);
+    }
+    if (e.kind == EffectKind::progressive_spring) {
+      EXPECT_NEAR(e.value[0], 4e6, 2e5) << report_text(d);
+    }
+  }
+}
+
 TEST(GapDesigns, TwoEffectsThatNoFirstChoiceLeadsToAreFoundTogether) {
   // Closing-only strokes, the tool as its file holds it: each recorded
   // stroke starts as the reopened arm comes to rest (0.1 s, 26 to 28
