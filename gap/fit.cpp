@@ -195,7 +195,8 @@ void Fitter::columns(size_t i, const std::vector<EffectKind>& linear, const Nonl
   }
   // The preload that makes the shift, where it is not a column of its own
   // (Fitter::fit searches it): k times the shift, at the spring's arm.
-  if (nl.compression_shift != 0 && std::find(linear.begin(), linear.end(), EffectKind::spring_preload) == linear.end()) {
+  const bool preload_fitted = std::find(linear.begin(), linear.end(), EffectKind::spring_preload) != linear.end();
+  if (nl.compression_shift != 0 && !preload_fitted) {
     const double torque = model_.spring_constant * nl.compression_shift * std::abs(model_.spring_position);
     for (double& v : *base) v += torque;
   }
@@ -520,6 +521,7 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
     }
     const double reach = 2 * (std::abs(unshifted) + deepest);
     fitted_linear.erase(fitted_linear.begin() + static_cast<std::ptrdiff_t>(at));
+    linear_sums.reset();  // they held the preload's column
     best.compression_shift = minimise(
         [&](double x, bool) { return train_rss(Nonlinear{best.delay, best.exponent, x}); }, unshifted - reach,
         unshifted + reach, kShiftSteps);
@@ -532,11 +534,13 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
     const double h = 1e-6;  // m
     const size_t dof = n > best_coef.size() + 1 ? n - best_coef.size() - 1 : 0;
     const double s2 = dof > 0 ? rss_train / static_cast<double>(dof) : 0.0;
-    auto at_shift = [&](double x) { return train_rss(Nonlinear{best.delay, best.exponent, x}); };
-    const double second = (at_shift(best.compression_shift + h) - 2 * rss_train + at_shift(best.compression_shift - h)) / (h * h);
+    auto at_shift = [&](double v) { return train_rss(Nonlinear{best.delay, best.exponent, v}); };
+    const double x = best.compression_shift;
+    const double second = (at_shift(x + h) - 2 * rss_train + at_shift(x - h)) / (h * h);
     const double shift_sigma = second > 0 ? std::sqrt(2 * s2 / second) : std::numeric_limits<double>::infinity();
-    best_coef.insert(best_coef.begin() + static_cast<std::ptrdiff_t>(at), model_.spring_constant * best.compression_shift);
-    best_sigma.insert(best_sigma.begin() + static_cast<std::ptrdiff_t>(at), model_.spring_constant * shift_sigma);
+    const auto where = static_cast<std::ptrdiff_t>(at);
+    best_coef.insert(best_coef.begin() + where, model_.spring_constant * x);
+    best_sigma.insert(best_sigma.begin() + where, model_.spring_constant * shift_sigma);
   }
 
   SetFit out;
@@ -580,7 +584,8 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
     e.kind = EffectKind::actee_compliance;
     const double c = best_coef.back();  // = reference^(1 - n)
     e.value[0] = best.exponent;
-    e.sigma[0] = curvature_sigma([&](double x) { return Nonlinear{best.delay, x, best.compression_shift}; }, best.exponent, 0.01);
+    e.sigma[0] = curvature_sigma([&](double x) { return Nonlinear{best.delay, x, best.compression_shift}; },
+                                 best.exponent, 0.01);
     if (!(c > 0)) out.valid = false;
     // A law that is linear has no reference; 1 mm stands for any.
     e.value[1] = std::abs(best.exponent - 1) < 1e-6 || !(c > 0) ? 1e-3 : std::pow(c, 1 / (1 - best.exponent));
@@ -594,7 +599,8 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
     EffectFit e;
     e.kind = EffectKind::sensor_latency;
     e.value[0] = best.delay;
-    e.sigma[0] = curvature_sigma([&](double x) { return Nonlinear{x, best.exponent, best.compression_shift}; }, best.delay, 5e-4);
+    e.sigma[0] = curvature_sigma([&](double x) { return Nonlinear{x, best.exponent, best.compression_shift}; },
+                                 best.delay, 5e-4);
     out.effects.push_back(e);
   }
   return out;

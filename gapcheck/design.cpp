@@ -436,7 +436,9 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
   // The sensor damped near critically against the arm (kMinInertia of the
   // realities and the hidden inertia): a sensor that rang at a few hundred
   // hertz would leave a ringing that no effect of the library models.
-  auto damp_sensor = [](Case& k) { k.hand.sensor_damping = 1.4 * std::sqrt(k.hand.sensor_stiffness * (1e-6 + k.truth.inertia)); };
+  auto damp_sensor = [](Case& k) {
+    k.hand.sensor_damping = 1.4 * std::sqrt(k.hand.sensor_stiffness * (1e-6 + k.truth.inertia));
+  };
   const double kind = uniform(rng, 0, 1);
   if (kind < 0.2) {
     damp_sensor(c);
