@@ -89,7 +89,9 @@ Replay slice(const Replay& r, size_t from, size_t to) {
 // each half of the whole where the jaws touch one: an actee's law is
 // fitted and judged in the contact alone, and where one trace held all
 // of it, as one block, the folds that judged it had none to fit the law
-// on (a light squeeze that touched only one way up).
+// on (a light squeeze that touched only one way up). A contact of fewer
+// than kMinBlock fitted samples (a brush at a crack) is too little to
+// share out, and counts as what it is among the rest.
 struct Block {
   size_t trace = 0, from = 0, to = 0;
 };
@@ -103,9 +105,11 @@ std::vector<Block> blocks_of(const std::vector<Replay>& replays) {
     }
   }
   // Each sample's share of what can be judged: all of it adds up to 1.
+  if (contact_all < static_cast<double>(kMinBlock)) contact_all = 0;
   const double halves = contact_all > 0 ? 2 : 1;
   auto mass = [&](const Replay& r, size_t s) {
-    return ((r.fitted[s] ? 1 / fitted_all : 0.0) + (in_contact(r, s) ? 1 / contact_all : 0.0)) / halves;
+    return ((r.fitted[s] ? 1 / fitted_all : 0.0) + (contact_all > 0 && in_contact(r, s) ? 1 / contact_all : 0.0)) /
+           halves;
   };
   std::vector<Block> out;
   for (size_t i = 0; i < replays.size(); ++i) {

@@ -41,21 +41,30 @@ Derivatives differentiate(Replay& r, double resolution) {
 // noise still moves the effort through the arm's inertia, A w^2 times
 // it), or the window reaches across the break (a kink no polynomial
 // follows). A noise's RMS over a window of some 50 samples is known to a
-// tenth.
-std::vector<bool> unresolved(const Derivatives& d, const Replay& r, const std::vector<double>& effort,
-                             double effort_noise, size_t break_at) {
-  const Derivatives e = local_derivatives(r.t, effort);
+// tenth. The effort is looked at less what the nominal model predicts
+// from the angle alone (`effort_left`, N): a stiff actee's law turns the
+// jaws' touch into a kink of the effort that the angle explains, which is
+// not motion the samples miss. Its noise (`effort_variance`, N^2, sample
+// by sample) is the sensor's and the angle's through that prediction.
+std::vector<bool> unresolved(const Derivatives& d, const Replay& r, const std::vector<double>& effort_left,
+                             const std::vector<double>& effort_variance, size_t break_at) {
+  const Derivatives e = local_derivatives(r.t, effort_left);
   const double allowed = kUnresolved * r.x_noise * d.misfit_noise_gain;
-  const double allowed_effort = kUnresolved * effort_noise * e.misfit_noise_gain;
+  const size_t n = r.t.size(), m = d.half_width;
+  // The noise's variance summed up to each sample: its mean over a window.
+  std::vector<double> summed(n + 1, 0.0);
+  for (size_t i = 0; i < n; ++i) summed[i + 1] = summed[i] + effort_variance[i];
   // A misfit marks its window's middle; what it cannot follow lies
   // somewhere in the window, and a ringing's tail decays past it: the
   // whole window is left out.
-  const size_t n = r.t.size(), m = d.half_width;
   std::vector<bool> out(n, false);
   for (size_t i = 0; i < n; ++i) {
+    const size_t from = i >= m ? i - m : 0, to = std::min(n - 1, i + m);
+    const double variance = (summed[to + 1] - summed[from]) / static_cast<double>(to + 1 - from);
+    const double allowed_effort = kUnresolved * std::sqrt(variance) * e.misfit_noise_gain;
     const bool across_break = break_at != SIZE_MAX && i + m >= break_at && i <= break_at + m;
     if (!across_break && d.misfit[i] <= allowed && e.misfit[i] <= allowed_effort) continue;
-    for (size_t j = i >= m ? i - m : 0; j <= std::min(n - 1, i + m); ++j) out[j] = true;
+    for (size_t j = from; j <= to; ++j) out[j] = true;
   }
   return out;
 }
@@ -349,6 +358,7 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
     }
     if (r.break_at >= n) r.break_at = SIZE_MAX;
     std::vector<bool> at_limit(n);
+    std::vector<double> from_angle(n);  // N*m: the nominal's prediction from the angle alone, no rates
     for (size_t i = 0; i < n; ++i) {
       const double theta = r.x[i], omega = r.rate[i], alpha = r.accel[i];
       r.measured[i] = trace[Signal::effort_force][i] * b;
@@ -369,9 +379,9 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       // Coulomb friction against the motion; a smooth sign near rest, where
       // the motion alone cannot say which way friction holds.
       const double friction = -model.friction_torque * smooth_sign(omega);
-      r.nominal[i] = spring.linear + spring.preload + spring.progressive + actee_force * a + friction -
-                     model.damping * omega - model.arm_inertia * alpha + g_cos * std::cos(theta) +
-                     g_sin * std::sin(theta);
+      from_angle[i] = spring.linear + spring.preload + spring.progressive + actee_force * a +
+                      g_cos * std::cos(theta) + g_sin * std::sin(theta);
+      r.nominal[i] = from_angle[i] + friction - model.damping * omega - model.arm_inertia * alpha;
       // The actee's torque F(a (theta_c - theta)) a turns by -F' a^2 per radian.
       r.slope[i] = spring.slope - slope * a * a - g_cos * std::sin(theta) + g_sin * std::cos(theta);
       at_limit[i] = theta <= model.theta_min + kLimitBand || theta >= model.theta_max - kLimitBand;
@@ -382,10 +392,17 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
     }
     if (model.sensor_latency > 0) {  // the sensor reports the effort of `delay` ago
       r.nominal = delayed(r.t, r.nominal, model.sensor_latency);
+      from_angle = delayed(r.t, from_angle, model.sensor_latency);
     }
     const std::vector<double>& effort = trace[Signal::effort_force];
     const double effort_noise = std::max(white_noise(effort), r.resolution);
-    const std::vector<bool> blurred = unresolved(d, r, effort, effort_noise, r.break_at);
+    std::vector<double> effort_left(n), effort_variance(n);
+    for (size_t i = 0; i < n; ++i) {
+      effort_left[i] = effort[i] - from_angle[i] / b;
+      const double through = r.slope[i] * r.x_noise / b;  // N: the angle's noise in that prediction
+      effort_variance[i] = effort_noise * effort_noise + through * through;
+    }
+    const std::vector<bool> blurred = unresolved(d, r, effort_left, effort_variance, r.break_at);
     // The snap as the actee gives way lasts until the polynomial follows
     // the motion again over a whole window, and then as long again as a
     // late sensor may read it: the measurement's own delay and the longest
