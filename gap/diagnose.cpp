@@ -25,6 +25,10 @@ constexpr int kLateRounds = 5;           // fits of a delay on the readings the 
 constexpr double kLateSettled = 5e-4;    // s: a delay that moves less than this holds
 constexpr size_t kMinBlock = 200;       // fitted samples: a block with fewer joins its neighbour
 constexpr double kStencilReach = 3;     // samples: how far before a delayed time its stencil reads
+// A force sensor's gain error a look-alike may have, at most: a load
+// cell's calibration is off by percents; one that reads half again or
+// half as much is a wrong unit or channel, which the user sees at once.
+constexpr double kMostGainError = 0.5;
 
 // Samples from..to of a replay: a block of its trace, judged on its own.
 // A block is cut for judging, not the force sensor's memory: a late
@@ -780,7 +784,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       const double cut = was - mean_sq(current_scored);
       return cut > 0 && was - gain_mean >= kNearlyAsFar * cut && paired_t(set_sq, gain_sq) < kSeparated;
     };
-    gain_alike = alike_in(false) && (!contact || alike_in(true));
+    gain_alike = std::abs(gain.gain) <= kMostGainError && alike_in(false) && (!contact || alike_in(true));
     if (gain_alike) {
       d.gain_alike = gain.gain;
       std::snprintf(line, sizeof line,

@@ -426,6 +426,18 @@ TEST(GapDesigns, AGainErrorOneWayUpIsToldAsAGainNotNamed) {
   EXPECT_NE(report_json(d).find("\"gain_alike\""), std::string::npos);
 }
 
+TEST(GapDesigns, AForceSensorReadingFarOffIsNoGainLookAlike) {
+  // A sensor that reads 80 % high is a wrong unit or channel, not a gain
+  // to fit: no look-alike is offered, and the library does not explain it.
+  Truth truth;
+  truth.gain = 1.8;
+  const auto drive = sine(10 * kDeg, 20 * kDeg, 1.5);
+  const Diagnosis d = diagnose(load_measurement(
+      measurement("gain80", {{"a.csv", trace(truth, 3, 10, 0, drive)}, {"b.csv", trace(truth, 4, 10, 0, drive)}}).string()));
+  EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
+  EXPECT_TRUE(std::isnan(d.gain_alike)) << report_text(d);
+}
+
 TEST(GapDesigns, AWeightTheTurnedToolShowsIsNotTakenForAGain) {
   // An unmodelled weight measured with the tool turned three ways: a gain
   // on the effort cannot follow the cosine that turns with the tool, so
