@@ -2,14 +2,16 @@
 // trace whose actee cracks in the first cycle while the tool goes on,
 // closing-only strokes, one orientation, a noise-free trace, white angle
 // noise through a heavy arm, ringing after contact, a force sensor's gain
-// error (told as a gain, not named), a late force sensor after rests, a light squeeze of the hazelnut
-// (a late sensor's fraction of a sample, friction sticking at the turn),
-// friction or damping told apart by the next effect, two effects no first
-// choice leads to (the smallest set that explains), an actee's law one
-// trace alone squeezes, quick strokes onto a stiff actee (its kink at the
-// touch is the angle's, through its law). Every trace is written by the formulas here (moment balance of
-// the shipped nutcracker: 2000 N/m at 10 mm, 1.5 N preload, 0.01 N*m of
-// friction, rest 30 deg, measured at 160 mm), not by the solver.
+// error (told as a gain, not named; one far off is no gain), a late force
+// sensor after rests, a light squeeze of the hazelnut (a late sensor's
+// fraction of a sample, friction sticking at the turn), friction or
+// damping told apart by the next effect, two effects no first choice
+// leads to (the smallest set that explains), an actee's law one trace
+// alone squeezes, quick strokes onto a stiff actee (its kink at the touch
+// is the angle's, through its law). Every trace is written by the
+// formulas here (moment balance of the shipped nutcracker: 2000 N/m at
+// 10 mm, 1.5 N preload, 0.01 N*m of friction, rest 30 deg, measured at
+// 160 mm), not by the solver.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -394,14 +396,22 @@ TEST(GapDesigns, RingingTheSamplesCannotResolveIsLeftOutNotNamed) {
   EXPECT_TRUE(unresolved) << report_text(d);
 }
 
+// Two 10 s traces one way up, the force sensor reading `gain` times the
+// force, driven by a sine from `low` to `high` (rad) of `period` s.
+Diagnosis one_way_up_read_with_gain(const std::string& name, double gain, double low, double high, double period,
+                                    unsigned seed) {
+  Truth truth;
+  truth.gain = gain;
+  const auto drive = sine(low, high, period);
+  return diagnose(load_measurement(
+      measurement(name, {{"a.csv", trace(truth, seed, 10, 0, drive)}, {"b.csv", trace(truth, seed + 1, 10, 0, drive)}})
+          .string()));
+}
+
 TEST(GapDesigns, AGainErrorOneWayUpIsNotNamedGravity) {
   // The force sensor reads 8 % high; the tool held one way up. A weight's
   // cosine over a short travel would absorb a scaled spring: not named.
-  Truth truth;
-  truth.gain = 1.08;
-  const auto drive = sine(8 * kDeg, 28 * kDeg, 1.0);
-  const Diagnosis d = diagnose(load_measurement(
-      measurement("gain", {{"a.csv", trace(truth, 1, 10, 0, drive)}, {"b.csv", trace(truth, 2, 10, 0, drive)}}).string()));
+  const Diagnosis d = one_way_up_read_with_gain("gain", 1.08, 8 * kDeg, 28 * kDeg, 1.0, 1);
   EXPECT_NE(d.verdict, Verdict::explained) << report_text(d);
   EXPECT_FALSE(names(d, {EffectKind::gravity})) << report_text(d);
 }
@@ -410,11 +420,7 @@ TEST(GapDesigns, AGainErrorOneWayUpIsToldAsAGainNotNamed) {
   // The force sensor reads 6 % high, one way up, over a short travel:
   // whatever the library fits to it, one gain on the effort explains the
   // gap as well held out, so nothing is named and the report says so.
-  Truth truth;
-  truth.gain = 1.06;
-  const auto drive = sine(10 * kDeg, 20 * kDeg, 1.5);
-  const Diagnosis d = diagnose(load_measurement(
-      measurement("gain6", {{"a.csv", trace(truth, 3, 10, 0, drive)}, {"b.csv", trace(truth, 4, 10, 0, drive)}}).string()));
+  const Diagnosis d = one_way_up_read_with_gain("gain6", 1.06, 10 * kDeg, 20 * kDeg, 1.5, 3);
   EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
   const auto told = std::find_if(d.steps.begin(), d.steps.end(),
                                  [](const std::string& s) { return s.find("a gain error") != std::string::npos; });
@@ -429,11 +435,7 @@ TEST(GapDesigns, AGainErrorOneWayUpIsToldAsAGainNotNamed) {
 TEST(GapDesigns, AForceSensorReadingFarOffIsNoGainLookAlike) {
   // A sensor that reads 80 % high is a wrong unit or channel, not a gain
   // to fit: no look-alike is offered, and the library does not explain it.
-  Truth truth;
-  truth.gain = 1.8;
-  const auto drive = sine(10 * kDeg, 20 * kDeg, 1.5);
-  const Diagnosis d = diagnose(load_measurement(
-      measurement("gain80", {{"a.csv", trace(truth, 3, 10, 0, drive)}, {"b.csv", trace(truth, 4, 10, 0, drive)}}).string()));
+  const Diagnosis d = one_way_up_read_with_gain("gain80", 1.8, 10 * kDeg, 20 * kDeg, 1.5, 3);
   EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
   EXPECT_TRUE(std::isnan(d.gain_alike)) << report_text(d);
 }
