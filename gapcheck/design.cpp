@@ -257,17 +257,21 @@ constexpr double kMaxLatency = 0.05;
 // an effect of the case.
 constexpr double kLeastContact = 0.1;
 
+// The case's drives played effect-free, with silent sensors: each drive's
+// samples, in the drives' order.
+using SilentPlay = std::vector<std::vector<Measured>>;
+
 // The latency (s, 2 ms to kMaxLatency) by which the effort `silent` reads
-// (the case played effect-free, with silent sensors) changes by `goal` N,
+// (the case's `drives` played effect-free, with silent sensors) changes by `goal` N,
 // RMS over the measured samples out of contact; 0 where even the longest
 // changes it by less than `least` N. The delay is the readout's
 // (sensor_readout.cpp): F(t - latency) against F(t), linear between
 // samples. Sized before on the drives' target (the spring's rate times
 // the target's), all but 2 of 20 latencies on development seeds
 // 3000-3099 were held at the longest, of a size nobody knew.
-double latency_for(double goal, double least, const Case& silent, const PlayDrive& play) {
-  std::vector<std::vector<double>> effort(silent.drives.size());
-  std::vector<std::vector<bool>> measured(silent.drives.size());
+double latency_for(double goal, double least, const std::vector<Drive>& drives, const SilentPlay& silent) {
+  std::vector<std::vector<double>> effort(drives.size());
+  std::vector<std::vector<bool>> measured(drives.size());
   // Only out of the actee's contact, not within the longest latency after
   // it (a late reading would reach back into it), and not in the 0.2 s
   // after a crack: there the effort's rate comes with the stiff contact's
@@ -278,15 +282,15 @@ double latency_for(double goal, double least, const Case& silent, const PlayDriv
   // contact only, a tongs' light squeeze, 3032, still had its latency
   // sized on the release's step and read `none`).
   constexpr double kSnap = 0.2;  // s
-  for (size_t i = 0; i < silent.drives.size(); ++i) {
+  for (size_t i = 0; i < drives.size(); ++i) {
     double broke = -1, touched = -1;  // s
-    for (const Measured& m : play(silent, silent.drives[i])) {
+    for (const Measured& m : silent[i]) {
       if (m.broken && broke < 0) broke = m.t;
       if (m.actee != 0) touched = m.t;
       effort[i].push_back(m.effort);
       const bool near_contact = touched >= 0 && m.t <= touched + kMaxLatency;
       const bool near_break = broke >= 0 && m.t < broke + kSnap;
-      measured[i].push_back(silent.drives[i].measured(m.t) && !near_contact && !near_break);
+      measured[i].push_back(drives[i].measured(m.t) && !near_contact && !near_break);
     }
   }
   auto change = [&](double latency) {
@@ -314,16 +318,17 @@ double latency_for(double goal, double least, const Case& silent, const PlayDriv
 }
 
 // The seconds of measured samples in which the jaws press the actee
-// before it cracks, not within kCrackReach of the crack, in the case
-// played effect-free with silent sensors (`silent`). A specimen that
+// before it cracks, not within kCrackReach of the crack, in the case's
+// `drives` played effect-free with silent sensors (`silent`). A specimen that
 // cracks in the first closing can be touched for a few ms only (a
 // tongs' fast stroke onto a stiff nut: 12 ms, 3080): its law then acts
 // on no sample an experimenter could read it from.
-double contact_seconds(const Case& silent, const PlayDrive& play) {
+double contact_seconds(const std::vector<Drive>& drives, const SilentPlay& silent) {
   constexpr double kCrackReach = 0.05;  // s: the approach to a crack, its snap in a 1 kHz trace
   double seconds = 0;
-  for (const Drive& d : silent.drives) {
-    const std::vector<Measured> played = play(silent, d);
+  for (size_t i = 0; i < drives.size(); ++i) {
+    const Drive& d = drives[i];
+    const std::vector<Measured>& played = silent[i];
     double broke = 1e300;  // s
     for (const Measured& m : played) {
       if (m.broken) {
@@ -469,14 +474,20 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
     k.hand.sensor_damping = 1.4 * std::sqrt(k.hand.sensor_stiffness * (1e-6 + k.truth.inertia));
   };
   // The case played effect-free, with silent sensors: what a latency and
-  // an actee's law are sized or judged on.
-  auto silent_case = [&] {
-    Case silent = c;
-    silent.truth = Truth{};
-    silent.actee_impedance = ActeeImpedance{};
-    silent.sensors = Sensors{.effort_noise = 0, .angle_noise = 0, .actee_noise = 0};
-    damp_sensor(silent);
-    return silent;
+  // an actee's law are sized or judged on. Played once, when first asked:
+  // what is drawn after (the truth, the actee's impedance) is reset in it.
+  std::optional<SilentPlay> silent_play;
+  auto silent = [&]() -> const SilentPlay& {
+    if (!silent_play) {
+      Case quiet = c;
+      quiet.truth = Truth{};
+      quiet.actee_impedance = ActeeImpedance{};
+      quiet.sensors = Sensors{.effort_noise = 0, .angle_noise = 0, .actee_noise = 0};
+      damp_sensor(quiet);
+      silent_play.emplace();
+      for (const Drive& d : quiet.drives) silent_play->push_back(play(quiet, d));
+    }
+    return *silent_play;
   };
   const double kind = uniform(rng, 0, 1);
   if (kind < 0.2) {
@@ -489,7 +500,7 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
     // A viscoelastic actee acts only in the contact: where the jaws press
     // it for less than kLeastContact (ODE's tongs cracked a nut in 14 ms,
     // 3045 and 3052) it is nothing a trace shows; another of the four.
-    if (outside == 4 && contact_seconds(silent_case(), play) < kLeastContact) outside = integer(rng, 0, 3);
+    if (outside == 4 && contact_seconds(c.drives, silent()) < kLeastContact) outside = integer(rng, 0, 3);
     const Drive& first = c.drives.front();
     const double top = first.high;
     const double bottom = c.tool.actee ? c.tool.actee->contact_angle : first.low;
@@ -536,12 +547,12 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
     // less than twice the floor.
     double latency = 0;  // s
     if (library[i] == Effect::latency) {
-      latency = latency_for(size * noise, 2 * noise, silent_case(), play);
+      latency = latency_for(size * noise, 2 * noise, c.drives, silent());
       if (latency == 0) continue;
     }
     // An actee's law likewise, where the jaws press the actee for less
     // than kLeastContact in all before it cracks.
-    if (library[i] == Effect::actee && contact_seconds(silent_case(), play) < kLeastContact) continue;
+    if (library[i] == Effect::actee && contact_seconds(c.drives, silent()) < kLeastContact) continue;
     ++drawn;
     switch (library[i]) {
       case Effect::friction: c.truth.friction = torque; break;
