@@ -42,9 +42,26 @@ double white_noise(const std::vector<double>& y) {
   return 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
 }
 
+double sample_step(const std::vector<double>& t) {
+  std::vector<double> steps(t.size() - 1);
+  for (size_t i = 0; i + 1 < t.size(); ++i) steps[i] = t[i + 1] - t[i];
+  std::nth_element(steps.begin(), steps.begin() + static_cast<long>(steps.size() / 2), steps.end());
+  const double median = steps[steps.size() / 2];
+  // The mean of the steps but the gaps: on an evenly sampled trace the
+  // mean itself, to the last bit (times like i * 1e-3 differ by rounding).
+  double span = t.back() - t.front();
+  size_t count = t.size() - 1;
+  for (size_t i = 0; i + 1 < t.size(); ++i) {
+    if (t[i + 1] - t[i] <= kRecordedApart * median) continue;
+    span -= t[i + 1] - t[i];
+    --count;
+  }
+  return span / static_cast<double>(count);
+}
+
 Derivatives local_derivatives(const std::vector<double>& t, const std::vector<double>& y) {
   const size_t n = t.size();
-  const double dt = (t.back() - t.front()) / static_cast<double>(n - 1);
+  const double dt = sample_step(t);
   // At least enough samples each side for the polynomial, at most the trace.
   const size_t wanted = std::max<size_t>(kDegree / 2 + 1, static_cast<size_t>(std::lround(kWindow / dt)));
   const size_t m = std::min(wanted, (n - 1) / 2);

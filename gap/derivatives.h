@@ -36,6 +36,15 @@ double white_noise(const std::vector<double>& y);
 // middle (1/s^2).
 std::vector<double> acceleration_weights(size_t half_width, int degree, double dt);
 
+// A step this many times the median one is a time gap: a stretch not
+// recorded (the returns of closing-only strokes).
+constexpr double kRecordedApart = 10;
+
+// s: the sampling interval of increasing times `t` (at least 2): the mean
+// step, the time gaps left out. With them, a trace of strokes recorded
+// apart had a mean step a tenth too long, and every step read as uneven.
+double sample_step(const std::vector<double>& t);
+
 // `t` increasing, the same length as `y`, at least 2 samples.
 Derivatives local_derivatives(const std::vector<double>& t, const std::vector<double>& y);
 

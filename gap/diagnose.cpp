@@ -666,8 +666,12 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // explaining. Then the smallest set that explains is looked for among
   // every single effect and pair, each of its effects earning its place
   // against the set without it; sets of that size as good as the best
-  // are its look-alikes.
-  if (!nominal_matched && !effects_match(current_scored)) {
+  // are its look-alikes. Where it ends with three that explain, a pair
+  // that explains too is the answer: the data do not ask for the third
+  // (a clean acceleration through closing strokes that are pure cosines
+  // is the angle again, and an inertia took a weight's place beside a
+  // preload that stood in for it).
+  if (!nominal_matched && (!effects_match(current_scored) || chosen.size() > 2)) {
     std::vector<std::vector<EffectKind>> sets;
     for (size_t a = 0; a < library.size(); ++a) {
       sets.push_back({library[a]});

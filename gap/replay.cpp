@@ -18,7 +18,6 @@ constexpr double kSignWidth = 1e-3;      // rad/s: friction's sign turns over th
 constexpr double kHeldBand = 0.1;        // friction's band below this share of a sample's noise does not matter
 constexpr double kUnresolved = 2;        // a window's misfit this many times its noise's: the motion is not resolved
 constexpr double kDropTime = 0.02;       // s: a crack drops the actee's force within this
-constexpr double kGapSteps = 10;         // a step this many times the mean is a time gap: a stretch not recorded
 
 // x, its rate and acceleration, and their noise (white_noise), no finer
 // than the printed `resolution` (rad or m), which a noise-free trace
@@ -121,7 +120,7 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
   // Within `edge` samples of a time gap (closing-only strokes whose return
   // was not recorded) the rates are one-sided, as at the trace's ends.
   std::vector<bool> near_gap(n, false);
-  const double gap = kGapSteps * (r.t.back() - r.t.front()) / static_cast<double>(std::max<size_t>(1, n - 1));
+  const double gap = kRecordedApart * sample_step(r.t);
   for (size_t i = 1; i < n; ++i) {
     if (r.t[i] - r.t[i - 1] <= gap) continue;
     for (size_t j = i >= edge ? i - edge : 0; j < std::min(n, i + edge); ++j) near_gap[j] = true;
@@ -188,7 +187,7 @@ std::vector<double> delayed(const std::vector<double>& t, const std::vector<doub
   // i. A sensor's memory starts again after a time gap (a stretch not
   // recorded): there, as at the trace's start, the first value is held.
   std::vector<double> out(y.size());
-  const double gap = kGapSteps * (t.back() - t.front()) / static_cast<double>(std::max<size_t>(1, t.size() - 1));
+  const double gap = kRecordedApart * sample_step(t);
   size_t j = 1;      // the first sample later than the time asked for, once inside
   size_t start = 0;  // the first sample of the stretch sample i is in
   for (size_t i = 0; i < y.size(); ++i) {
@@ -213,9 +212,9 @@ std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const st
   // linear between the samples either side).
   const size_t n = t.size();
   std::vector<double> out(n);
-  const double step = (t.back() - t.front()) / static_cast<double>(std::max<size_t>(1, n - 1));  // s
-  const double gap = kGapSteps * (t.back() - t.front()) / static_cast<double>(std::max<size_t>(1, n - 1));
-  // even[a]: the step from sample a to a + 1 is the mean step (within 1 %).
+  const double step = sample_step(t);  // s
+  const double gap = kRecordedApart * step;
+  // even[a]: the step from sample a to a + 1 is the sampling step (within 1 %).
   std::vector<unsigned char> even(n, 0);
   for (size_t a = 0; a + 1 < n; ++a) even[a] = std::abs(t[a + 1] - t[a] - step) <= 0.01 * step;
   size_t j = 1;             // the first sample later than the time asked for
@@ -250,7 +249,7 @@ void leave_out_late_readings(std::vector<Replay>& replays, double delay) {
   if (delay <= 0) return;
   for (Replay& r : replays) {
     const size_t n = r.t.size();
-    const double gap = kGapSteps * (r.t.back() - r.t.front()) / static_cast<double>(std::max<size_t>(1, n - 1));
+    const double gap = kRecordedApart * sample_step(r.t);
     const std::vector<bool> source = r.fitted;  // where the model predicts the effort
     size_t start = 0;                             // the first sample of the stretch sample i is in
     for (size_t i = 0; i < n; ++i) {

@@ -54,7 +54,7 @@ SmoothAcceleration smooth_acceleration(const std::vector<double>& t, const std::
   const size_t n = t.size();
   SmoothAcceleration out{narrow.accel, std::vector<double>(n, 0.0)};
   if (n < 2 || narrow.degree < 2) return out;
-  const double dt = (t.back() - t.front()) / static_cast<double>(n - 1);
+  const double dt = sample_step(t);
   const size_t m0 = narrow.half_width;
   Window current{acceleration_weights(m0, narrow.degree, dt), narrow.accel, std::vector<bool>(n, true)};
   std::fill(out.noise_gain.begin(), out.noise_gain.end(), norm(current.weights));

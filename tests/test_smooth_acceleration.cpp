@@ -1,7 +1,8 @@
 // The acceleration from the widest window the motion allows
 // (gap/smooth_acceleration.h): a slow motion under white angle noise gets
-// the wide window and its far smaller noise; a ringing the wide window
-// would smear keeps the narrow one; with no noise nothing changes.
+// the wide window and its far smaller noise, inside each stroke of a
+// trace recorded in strokes; a ringing the wide window would smear keeps
+// the narrow one; with no noise nothing changes.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,6 +72,39 @@ TEST(SmoothAcceleration, ASlowMotionGetsTheWideWindowAndItsSmallNoise) {
   EXPECT_NEAR(narrow_error, 3e-4 * norm(acceleration_weights(25, 6, 1e-3)), 0.1 * narrow_error);
   EXPECT_LT(smooth_error, 1.5 * 3e-4 * wide_gain);
   EXPECT_LT(smooth_error, narrow_error / 50);
+}
+
+TEST(SmoothAcceleration, StrokesRecordedApartGetTheWideWindowInsideEachStroke) {
+  // Closing-only strokes: three stretches of 2.5 s at 1 kHz, the 0.6 s
+  // between them not recorded (a mean step 5 % over 1 ms). The same slow
+  // sine and noise as above: inside each stretch, 0.2 s and more from its
+  // ends, the +-200 ms window is taken; no window reaches across a gap.
+  std::vector<double> t, y;
+  std::mt19937 random(5);
+  std::normal_distribution<double> noise(0.0, 3e-4);
+  for (int stroke = 0; stroke < 3; ++stroke) {
+    for (int i = 0; i < 2500; ++i) {
+      t.push_back(stroke * 3.1 + i * 1e-3);
+      y.push_back(0.3 * std::sin(kPi * t.back()) + noise(random));
+    }
+  }
+  EXPECT_DOUBLE_EQ(sample_step(t), 1e-3);
+  const Derivatives narrow = local_derivatives(t, y);
+  const SmoothAcceleration smooth = smooth_acceleration(t, y, 3e-4, narrow);
+  const double wide_gain = norm(acceleration_weights(200, 6, 1e-3));
+  const double narrow_gain = norm(acceleration_weights(25, 6, 1e-3));
+  int inside = 0, wide = 0;
+  for (size_t i = 0; i < t.size(); ++i) {
+    const double into = std::fmod(t[i] + 1e-9, 3.1);  // s into its stretch
+    if (into < 0.2 - 1e-9 && into > 0.025) {
+      EXPECT_GT(smooth.noise_gain[i], wide_gain) << t[i];
+    }
+    if (into < 0.2 || into > 2.3) continue;
+    ++inside;
+    if (std::abs(smooth.noise_gain[i] - wide_gain) < 1e-9 * wide_gain) ++wide;  // its step: 1 ms to rounding
+  }
+  EXPECT_GT(wide, inside * 9 / 10);
+  EXPECT_NEAR(smooth.noise_gain[10], narrow_gain, 1e-9 * narrow_gain);  // the window shifted inside: the narrow fit
 }
 
 TEST(SmoothAcceleration, ARingingKeepsTheNarrowWindow) {
