@@ -58,6 +58,8 @@ Diagnosed summary(const afford::Diagnosis& d) {
   s.verdict = afford::verdict_name(d.verdict);
   s.shrink = d.shrink;
   s.gap = d.noise_through_model > 0 ? d.rmse_before / d.noise_through_model : 0.0;
+  const double before = d.shrink_in_contact ? d.contact_before : d.rmse_before;
+  s.ceiling = before > 0 ? std::max(0.0, 1 - d.noise_through_model / before) : 0.0;
   std::vector<afford::EffectKind> adopted;
   for (const afford::EffectFit& e : d.effects) adopted.push_back(e.kind);
   s.effects = sorted_names(adopted);

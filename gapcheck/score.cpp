@@ -25,8 +25,18 @@ bool right_set(const Diagnosed& d, const std::vector<std::string>& truth) {
 struct Tally {
   int effect_cases = 0, right = 0, free_cases = 0, free_none = 0, outside_cases = 0, outside_unexplained = 0;
   int withheld = 0, withheld_unexplained = 0;
-  std::vector<double> shrinks;
+  std::vector<double> shrinks, ceilings;
 };
+
+// "-" for none.
+std::string median_of(std::vector<double> v) {
+  if (v.empty()) return "-";
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%.3f", n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+  return buf;
+}
 
 std::string fraction(int a, int b) {
   if (b == 0) return "-";
@@ -63,7 +73,7 @@ void score(const std::vector<Diagnosed>& cases, const std::map<std::string, std:
   std::map<std::string, Tally> groups;
   std::map<std::string, std::map<std::string, int>> confusion;
   std::ofstream csv(out / "results.csv");
-  csv << "case,engine,group,label,verdict,named,shrink,gap,withheld\n";
+  csv << "case,engine,group,label,verdict,named,shrink,gap,ceiling,withheld\n";
   for (const Diagnosed& d : cases) {
     const std::string& label = labels.at(d.name);
     const bool outside = label.rfind("outside:", 0) == 0;
@@ -71,7 +81,8 @@ void score(const std::vector<Diagnosed>& cases, const std::map<std::string, std:
     const std::string group = d.scenario + (d.several_orientations ? "+turned" : "");
     const auto w = withheld.find(d.name);
     csv << d.name << "," << engine << "," << group << "," << label << ",\"" << d.verdict << "\",\"" << d.named()
-        << "\"," << d.shrink << "," << d.gap << ",\"" << (w != withheld.end() ? w->second : "") << "\"\n";
+        << "\"," << d.shrink << "," << d.gap << "," << d.ceiling << ",\"" << (w != withheld.end() ? w->second : "")
+        << "\"\n";
     ++confusion[label][d.named()];
     for (const std::string& key : {std::string("all"), "scenario " + d.scenario,
                                    std::string(d.several_orientations ? "several orientations" : "one orientation"),
@@ -87,6 +98,7 @@ void score(const std::vector<Diagnosed>& cases, const std::map<std::string, std:
         ++t.effect_cases;
         t.right += right_set(d, label_effects(label)) ? 1 : 0;
         t.shrinks.push_back(d.shrink);
+        t.ceilings.push_back(d.ceiling);
         if (w != withheld.end()) {
           ++t.withheld;
           t.withheld_unexplained += w->second == "unexplained" ? 1 : 0;
@@ -95,18 +107,13 @@ void score(const std::vector<Diagnosed>& cases, const std::map<std::string, std:
     }
   }
   std::printf("\n%s figures, %s, %zu cases\n", seeds.c_str(), engine.c_str(), cases.size());
-  std::printf("%-34s %-14s %-14s %-14s %-8s %-14s\n", "group", "right set", "free: none", "outside: unexpl",
-              "shrink", "withheld: unexpl");
-  for (auto& [key, t] : groups) {
-    std::sort(t.shrinks.begin(), t.shrinks.end());
-    char median[16] = "-";
-    if (!t.shrinks.empty()) {
-      const size_t n = t.shrinks.size();
-      std::snprintf(median, sizeof median, "%.3f", n % 2 ? t.shrinks[n / 2] : 0.5 * (t.shrinks[n / 2 - 1] + t.shrinks[n / 2]));
-    }
-    std::printf("%-34s %-14s %-14s %-14s %-8s %-14s\n", key.c_str(), fraction(t.right, t.effect_cases).c_str(),
+  std::printf("%-34s %-14s %-14s %-14s %-8s %-8s %-14s\n", "group", "right set", "free: none", "outside: unexpl",
+              "shrink", "ceiling", "withheld: unexpl");
+  for (const auto& [key, t] : groups) {
+    std::printf("%-34s %-14s %-14s %-14s %-8s %-8s %-14s\n", key.c_str(), fraction(t.right, t.effect_cases).c_str(),
                 fraction(t.free_none, t.free_cases).c_str(), fraction(t.outside_unexplained, t.outside_cases).c_str(),
-                median, fraction(t.withheld_unexplained, t.withheld).c_str());
+                median_of(t.shrinks).c_str(), median_of(t.ceilings).c_str(),
+                fraction(t.withheld_unexplained, t.withheld).c_str());
   }
   std::printf("\nconfusion (true: what the diagnosis said, cases)\n");
   for (const auto& [label, row] : confusion) {
