@@ -43,6 +43,7 @@ double white_noise(const std::vector<double>& y) {
 }
 
 double sample_step(const std::vector<double>& t) {
+  if (t.size() < 2) return 0.0;
   std::vector<double> steps(t.size() - 1);
   for (size_t i = 0; i + 1 < t.size(); ++i) steps[i] = t[i + 1] - t[i];
   std::nth_element(steps.begin(), steps.begin() + static_cast<long>(steps.size() / 2), steps.end());

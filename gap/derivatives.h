@@ -40,8 +40,8 @@ std::vector<double> acceleration_weights(size_t half_width, int degree, double d
 // recorded (the returns of closing-only strokes).
 constexpr double kRecordedApart = 10;
 
-// s: the sampling interval of increasing times `t` (at least 2): the mean
-// step, the time gaps left out. With them, a trace of strokes recorded
+// s: the sampling interval of increasing times `t` (0 for fewer than
+// two): the mean step, the time gaps left out. With them, a trace of strokes recorded
 // apart had a mean step a tenth too long, and every step read as uneven.
 double sample_step(const std::vector<double>& t);
 
