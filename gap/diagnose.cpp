@@ -54,6 +54,7 @@ Replay slice(const Replay& r, size_t from, size_t to) {
   h.turned = r.turned;
   h.x_noise = r.x_noise;
   h.rate_noise = r.rate_noise;
+  h.step = r.step;
   h.inertia = r.inertia;
   h.resolution = r.resolution;
   h.rig = r.rig;

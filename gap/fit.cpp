@@ -206,8 +206,8 @@ void Fitter::columns(size_t i, const std::vector<EffectKind>& linear, const Nonl
     cols->push_back(actee_term(model_, r, actee_, nl.exponent, 1.0));  // k * delta^n: its coefficient is r^(1-n)
   }
   if (nl.delay != 0) {
-    *base = delayed_keeping_noise(r.t, *base, nl.delay);
-    for (auto& c : *cols) c = delayed_keeping_noise(r.t, c, nl.delay);
+    *base = delayed_keeping_noise(r.t, *base, nl.delay, r.step);
+    for (auto& c : *cols) c = delayed_keeping_noise(r.t, c, nl.delay, r.step);
   }
   for (double& v : *base) v *= r.to_newtons;
   for (auto& c : *cols) {

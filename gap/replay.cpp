@@ -24,6 +24,7 @@ constexpr double kDropTime = 0.02;       // s: a crack drops the actee's force w
 // still has.
 Derivatives differentiate(Replay& r, double resolution) {
   Derivatives d = local_derivatives(r.t, r.x);
+  r.step = sample_step(r.t);
   r.x_noise = std::max(white_noise(r.x), resolution);
   r.rate_noise = r.x_noise * d.rate_noise_gain;
   SmoothAcceleration a = smooth_acceleration(r.t, r.x, r.x_noise, d);
@@ -120,7 +121,7 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
   // Within `edge` samples of a time gap (closing-only strokes whose return
   // was not recorded) the rates are one-sided, as at the trace's ends.
   std::vector<bool> near_gap(n, false);
-  const double gap = kRecordedApart * sample_step(r.t);
+  const double gap = kRecordedApart * r.step;
   for (size_t i = 1; i < n; ++i) {
     if (r.t[i] - r.t[i - 1] <= gap) continue;
     for (size_t j = i >= edge ? i - edge : 0; j < std::min(n, i + edge); ++j) near_gap[j] = true;
@@ -182,12 +183,16 @@ double value_at(const std::vector<double>& t, const std::vector<double>& y, doub
 }
 
 std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay) {
+  return delay == 0 ? y : delayed(t, y, delay, sample_step(t));
+}
+
+std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay, double step) {
   if (delay == 0) return y;
   // value_at at every t[i] - delay, in one walk: those times increase with
   // i. A sensor's memory starts again after a time gap (a stretch not
   // recorded): there, as at the trace's start, the first value is held.
   std::vector<double> out(y.size());
-  const double gap = kRecordedApart * sample_step(t);
+  const double gap = kRecordedApart * step;
   size_t j = 1;      // the first sample later than the time asked for, once inside
   size_t start = 0;  // the first sample of the stretch sample i is in
   for (size_t i = 0; i < y.size(); ++i) {
@@ -206,13 +211,17 @@ std::vector<double> delayed(const std::vector<double>& t, const std::vector<doub
 }
 
 std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay) {
+  return delay == 0 ? y : delayed_keeping_noise(t, y, delay, sample_step(t));
+}
+
+std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay,
+                                          double step) {
   if (delay == 0) return y;
   // One walk: where the stencil does not apply, delayed()'s value, as it
   // would give it (held before a stretch's start and after the end, else
   // linear between the samples either side).
   const size_t n = t.size();
   std::vector<double> out(n);
-  const double step = sample_step(t);  // s
   const double gap = kRecordedApart * step;
   // even[a]: the step from sample a to a + 1 is the sampling step (within 1 %).
   std::vector<unsigned char> even(n, 0);
@@ -249,7 +258,7 @@ void leave_out_late_readings(std::vector<Replay>& replays, double delay) {
   if (delay <= 0) return;
   for (Replay& r : replays) {
     const size_t n = r.t.size();
-    const double gap = kRecordedApart * sample_step(r.t);
+    const double gap = kRecordedApart * r.step;
     const std::vector<bool> source = r.fitted;  // where the model predicts the effort
     size_t start = 0;                             // the first sample of the stretch sample i is in
     for (size_t i = 0; i < n; ++i) {
@@ -296,7 +305,7 @@ void weigh(std::vector<Replay>& replays, double noise, double delay) {
     // hold for every set compared, late or not: the noisier prediction
     // sets it.
     if (delay > 0) {
-      const std::vector<double> late = delayed(r.t, through, delay);
+      const std::vector<double> late = delayed(r.t, through, delay, r.step);
       for (size_t i = 0; i < through.size(); ++i) through[i] = std::max(through[i], late[i]);
     }
     r.weight.resize(r.t.size());
@@ -390,8 +399,8 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       }
     }
     if (model.sensor_latency > 0) {  // the sensor reports the effort of `delay` ago
-      r.nominal = delayed(r.t, r.nominal, model.sensor_latency);
-      from_angle = delayed(r.t, from_angle, model.sensor_latency);
+      r.nominal = delayed(r.t, r.nominal, model.sensor_latency, r.step);
+      from_angle = delayed(r.t, from_angle, model.sensor_latency, r.step);
     }
     const std::vector<double>& effort = trace[Signal::effort_force];
     const double effort_noise = std::max(white_noise(effort), r.resolution);

@@ -52,6 +52,7 @@ struct Replay {
   // (its window is the data's choice: smooth_acceleration.h), the
   // acceleration.
   double x_noise = 0, rate_noise = 0;
+  double step = 0;  // s, the sampling step, time gaps left out (sample_step)
   std::vector<double> accel_noise;
   // kg*m^2: the nominal arm's inertia, through which the acceleration's
   // noise reaches the prediction (0 between plates).
@@ -110,7 +111,9 @@ void release_held(std::vector<Replay>& replays, double friction);
 double value_at(const std::vector<double>& t, const std::vector<double>& y, double at);
 
 // y as a sensor `delay` s late reads it: value_at(t, y, t[i] - delay) at
-// every sample, in linear time.
+// every sample, in linear time. `step` is sample_step(t) (derivatives.h),
+// given where it is known (a Replay's `step`), else found.
+std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay, double step);
 std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay);
 
 // The same, for a prediction carrying the angle's noise (a fit's columns):
@@ -119,6 +122,8 @@ std::vector<double> delayed(const std::vector<double>& t, const std::vector<doub
 // averages two samples' noise (half its variance at half a sample), so a
 // fraction of a sample's delay would cut the noise a stiff actee passes
 // from the angle into the prediction, and read as a late sensor.
+std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay,
+                                          double step);
 std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay);
 
 // The direction of motion, smoothed over a small speed so that a fit's
