@@ -414,15 +414,18 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
     // The snap as the actee gives way lasts until the polynomial follows
     // the motion again over a whole window, and then as long again as a
     // late sensor may read it: the measurement's own delay and the longest
-    // a fit searches.
+    // a fit searches. One resolved sample is enough: `blurred` already
+    // spreads every window the polynomial misses over the samples it holds,
+    // so a sample outside them has every window about it followed. Asking
+    // for a window of such samples in a row, a press that slammed shut at
+    // the crack and then stroked between its stops (strokes of 0.12 s, a
+    // bump at each stop) never settled, and all its trace was left out
+    // (development seed 3212).
     std::vector<bool> snap(n, false);
     if (r.break_at != SIZE_MAX) {
-      const size_t window = 2 * d.half_width + 1;
-      size_t calm = 0;  // resolved samples in a row
       double settled = -1;  // s, when the motion settled
       for (size_t i = r.break_at; i < n; ++i) {
-        calm = blurred[i] ? 0 : calm + 1;
-        if (settled < 0 && calm >= window) settled = r.t[i];
+        if (settled < 0 && !blurred[i]) settled = r.t[i];
         if (settled >= 0 && r.t[i] - settled >= model.sensor_latency + kLongestDelay) break;
         snap[i] = true;
       }

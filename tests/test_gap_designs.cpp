@@ -1,9 +1,11 @@
 // The gap diagnosis on the measurement designs that defeated it: a single
 // trace whose actee cracks in the first cycle while the tool goes on,
 // closing-only strokes, one orientation, a noise-free trace, white angle
-// noise through a heavy arm, ringing after contact, a force sensor's gain
+// noise through a heavy arm, a force sensor's slightly coloured noise,
+// ringing after contact, a force sensor's gain
 // error (told as a gain, not named; one far off is no gain), a late force
-// sensor after rests, a light squeeze of the hazelnut (a late sensor's
+// sensor after rests, a tool that slams shut at the crack and strokes
+// between its stops, a light squeeze of the hazelnut (a late sensor's
 // fraction of a sample, friction sticking at the turn), friction or
 // damping told apart by the next effect, two effects no first choice
 // leads to (the smallest set that explains), a heavy arm in strokes
@@ -22,6 +24,7 @@
 #include <fstream>
 #include <sstream>
 #include <functional>
+#include <memory>
 #include <random>
 #include <unistd.h>
 
@@ -354,6 +357,38 @@ TEST(GapDesigns, AHeavyArmTheFileLacksIsNamedUnderAngleNoise) {
   EXPECT_NEAR(d.effects[0].value[0], 0.004, 0.0002) << report_text(d);
 }
 
+// A force sensor whose noise is a little coloured (a share of it is the
+// mean of two samples in a row, as a load cell's filter leaves it):
+// `coloured` N of it beside the white 0.02 N, added at the effort.
+std::function<double(double, const Motion&)> coloured_noise(double coloured, unsigned seed) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  auto v = std::make_shared<std::vector<double>>(20001);
+  for (double& x : *v) x = unit(random);
+  return [=](double t, const Motion&) {
+    const auto k = static_cast<size_t>(std::lround(t * 1000));
+    return coloured * ((*v)[k + 1] + (*v)[k]) / std::sqrt(2.0) * kB;
+  };
+}
+
+TEST(GapDesigns, AForceSensorsSlightlyColouredNoiseIsNoGap) {
+  // No effect; 0.007 N of the sensor's noise coloured beside its white
+  // 0.02 N, which puts the residual over the whiteness test's 99 % point
+  // at about the noise in RMSE, yet under twice the point: no shape.
+  // Nothing in the library cuts it, and no gap is claimed (MuJoCo's
+  // effect-free nutcrackers read `unexplained` so, development seeds 3219
+  // and 3225).
+  Truth truth;
+  const auto drive = sine(8 * kDeg, 28 * kDeg, 1.3);
+  const Diagnosis d = diagnose(load_measurement(
+      measurement("coloured", {{"a.csv", trace(truth, 51, 10, 0, drive, coloured_noise(0.007, 52))},
+                               {"b.csv", trace(truth, 53, 10, 0, drive, coloured_noise(0.007, 54))}})
+          .string()));
+  ASSERT_GT(d.residual.q, d.residual.threshold) << report_text(d);  // the design: over the point
+  EXPECT_EQ(d.verdict, Verdict::none) << report_text(d);
+  EXPECT_TRUE(d.effects.empty()) << report_text(d);
+}
+
 TEST(GapDesigns, ATraceWithNothingToJudgeIsNotCalledAMatch) {
   // The arm held still for 3 s: at rest friction may take any value, so
   // no sample is one the model predicts; nothing was compared, and `none`
@@ -509,6 +544,62 @@ fs::path squeeze_measurement(const std::string& name, const std::vector<std::str
   }
   std::ofstream(dir / "m.yaml") << "measurement: " << name << "\n" << kHazelnutHead << "traces: [" << list << "]\n";
   return dir / "m.yaml";
+}
+
+TEST(GapDesigns, AToolThatSlamsShutAtTheCrackAndStrokesBetweenStopsIsJudgedAfterIt) {
+  // One closing onto the hazelnut in 0.5 s cracks it; then the arm rests
+  // 0.1 s at a stop (13 deg, then 20 or 16.5 deg by turns: two speeds,
+  // so that friction is not damping) and strokes between them in 0.15 s at
+  // a constant speed, 0.3 N*m more friction than the file's: each
+  // stroke's start and end is a kink of the angle and a step of the
+  // effort that no polynomial follows, which leaves some 50 resolved
+  // samples in each stroke's middle, never a whole window of them in a
+  // row. Those strokes are the tool alone, to be judged (a press that
+  // slammed shut at the crack, development seed 3212, left out all of it).
+  const Jaws j = hazelnut_jaws();
+  const double low = 13 * kDeg, rest = 0.1, stroke = 0.15;  // rad, s, s
+  const auto motion = [&](double t) {
+    if (t < 0.5) {  // a half cosine from 28 deg down to the lower stop
+      const double mid = 20.5 * kDeg, amp = 7.5 * kDeg, w = kPi / 0.5;
+      return Motion{mid + amp * std::cos(w * t), -amp * w * std::sin(w * t), -amp * w * w * std::cos(w * t)};
+    }
+    const double cycle = 2 * (rest + stroke), u = std::fmod(t - 0.5, cycle);
+    const double high = std::fmod(t - 0.5, 2 * cycle) < cycle ? 20 * kDeg : 16.5 * kDeg;
+    const double speed = (high - low) / stroke;  // rad/s
+    if (u < rest) return Motion{low, 0, 0};
+    if (u < rest + stroke) return Motion{low + speed * (u - rest), speed, 0};
+    if (u < 2 * rest + stroke) return Motion{high, 0, 0};
+    return Motion{high - speed * (u - 2 * rest - stroke), -speed, 0};
+  };
+  Truth truth;
+  truth.friction = 0.3;
+  truth.angle_noise = 1e-4;
+  std::mt19937 random(12);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  std::string csv = "t,angle,effort_force,actee_force,broken\n";
+  bool broken = false;
+  for (int i = 0; i < 6000; ++i) {
+    const double t = i * 1e-3;
+    const Motion m = motion(t);
+    const double d = std::max(0.0, j.a * (j.theta_c - m.theta));
+    double force = broken ? 0.0 : 270e3 * d * j.h / (j.h - d);
+    if (!broken && force > 431) {  // the hazelnut's limit
+      broken = true;
+      force = 0;
+    }
+    const double tau = torque(truth, m.theta, m.omega, m.alpha, 0, force, j.a);
+    char row[160];
+    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,%.4f,%d\n", t, m.theta + truth.angle_noise * unit(random),
+                  tau / kB + truth.effort_noise * unit(random), force + 0.1 * unit(random), broken ? 1 : 0);
+    csv += row;
+  }
+  ASSERT_TRUE(broken);
+  const Diagnosis d = diagnose(load_measurement(squeeze_measurement("slam", {csv}).string()));
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  EXPECT_TRUE(names(d, {EffectKind::pivot_friction})) << report_text(d);
+  if (!d.effects.empty()) {
+    EXPECT_NEAR(d.effects[0].value[0], 0.3, 0.01) << report_text(d);
+  }
 }
 
 TEST(GapDesigns, ALateSensorCannotWinInASqueezeBySmoothingTheAnglesNoise) {
