@@ -546,6 +546,38 @@ fs::path squeeze_measurement(const std::string& name, const std::vector<std::str
   return dir / "m.yaml";
 }
 
+// 6 s at 1 kHz along `motion`, the hazelnut in the jaws by its file's law
+// (270 N/mm) until it gives way at its 431 N, then nothing: the effort,
+// the load cell's force (0.1 N of noise) and the `broken` column.
+struct CrackTrace {
+  std::string csv;
+  bool broken = false;
+  int touching = 0;  // samples the jaws held the nut whole
+};
+CrackTrace crack_trace(const Truth& h, const Jaws& j, unsigned seed, const std::function<Motion(double)>& motion) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  CrackTrace out;
+  out.csv = "t,angle,effort_force,actee_force,broken\n";
+  for (int i = 0; i < 6000; ++i) {
+    const double t = i * 1e-3;
+    const Motion m = motion(t);
+    const double d = std::max(0.0, j.a * (j.theta_c - m.theta));
+    double force = out.broken ? 0.0 : 270e3 * d * j.h / (j.h - d);
+    if (!out.broken && force > 431) {
+      out.broken = true;
+      force = 0;
+    }
+    out.touching += !out.broken && d > 0 ? 1 : 0;
+    const double tau = torque(h, m.theta, m.omega, m.alpha, 0, force, j.a);
+    char row[160];
+    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,%.4f,%d\n", t, m.theta + h.angle_noise * unit(random),
+                  tau / kB + h.effort_noise * unit(random), force + 0.1 * unit(random), out.broken ? 1 : 0);
+    out.csv += row;
+  }
+  return out;
+}
+
 TEST(GapDesigns, AToolThatSlamsShutAtTheCrackAndStrokesBetweenStopsIsJudgedAfterIt) {
   // One closing onto the hazelnut in 0.5 s cracks it; then the arm rests
   // 0.1 s at a stop (13 deg, then 20 or 16.5 deg by turns: two speeds,
@@ -574,27 +606,9 @@ TEST(GapDesigns, AToolThatSlamsShutAtTheCrackAndStrokesBetweenStopsIsJudgedAfter
   Truth truth;
   truth.friction = 0.3;
   truth.angle_noise = 1e-4;
-  std::mt19937 random(12);
-  std::normal_distribution<double> unit(0.0, 1.0);
-  std::string csv = "t,angle,effort_force,actee_force,broken\n";
-  bool broken = false;
-  for (int i = 0; i < 6000; ++i) {
-    const double t = i * 1e-3;
-    const Motion m = motion(t);
-    const double d = std::max(0.0, j.a * (j.theta_c - m.theta));
-    double force = broken ? 0.0 : 270e3 * d * j.h / (j.h - d);
-    if (!broken && force > 431) {  // the hazelnut's limit
-      broken = true;
-      force = 0;
-    }
-    const double tau = torque(truth, m.theta, m.omega, m.alpha, 0, force, j.a);
-    char row[160];
-    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,%.4f,%d\n", t, m.theta + truth.angle_noise * unit(random),
-                  tau / kB + truth.effort_noise * unit(random), force + 0.1 * unit(random), broken ? 1 : 0);
-    csv += row;
-  }
-  ASSERT_TRUE(broken);
-  const Diagnosis d = diagnose(load_measurement(squeeze_measurement("slam", {csv}).string()));
+  const CrackTrace crack = crack_trace(truth, j, 12, motion);
+  ASSERT_TRUE(crack.broken);
+  const Diagnosis d = diagnose(load_measurement(squeeze_measurement("slam", {crack.csv}).string()));
   EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
   EXPECT_TRUE(names(d, {EffectKind::pivot_friction})) << report_text(d);
   if (!d.effects.empty()) {
@@ -616,30 +630,10 @@ TEST(GapDesigns, AFewSamplesInTheActeesContactAreNotJudgedOnTheirOwn) {
   const auto motion = [&](double t) { return t < half ? closing(t) : strokes(t - half + 0.6); };
   Truth truth;
   truth.angle_noise = 1e-4;
-  std::string csv = "t,angle,effort_force,actee_force,broken\n";
-  std::mt19937 random(14);
-  std::normal_distribution<double> unit(0.0, 1.0);
-  bool broken = false;
-  int touching = 0;  // samples
-  for (int i = 0; i < 6000; ++i) {
-    const double t = i * 1e-3;
-    const Motion m = motion(t);
-    const double d = std::max(0.0, j.a * (j.theta_c - m.theta));
-    double force = broken ? 0.0 : 270e3 * d * j.h / (j.h - d);
-    if (!broken && force > 431) {  // the hazelnut's limit
-      broken = true;
-      force = 0;
-    }
-    touching += !broken && d > 0 ? 1 : 0;
-    const double tau = torque(truth, m.theta, m.omega, m.alpha, 0, force, j.a);
-    char row[160];
-    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,%.4f,%d\n", t, m.theta + truth.angle_noise * unit(random),
-                  tau / kB + truth.effort_noise * unit(random), force + 0.1 * unit(random), broken ? 1 : 0);
-    csv += row;
-  }
-  ASSERT_TRUE(broken);
-  ASSERT_GT(touching, 50);  // the design: a contact of tens of samples
-  const Diagnosis d = diagnose(load_measurement(squeeze_measurement("brush", {csv}).string()));
+  const CrackTrace crack = crack_trace(truth, j, 14, motion);
+  ASSERT_TRUE(crack.broken);
+  ASSERT_GT(crack.touching, 50);  // the design: a contact of tens of samples
+  const Diagnosis d = diagnose(load_measurement(squeeze_measurement("brush", {crack.csv}).string()));
   EXPECT_EQ(d.contact_samples, 0u) << report_text(d);
   EXPECT_EQ(d.verdict, Verdict::none) << report_text(d);
 }
