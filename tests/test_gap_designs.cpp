@@ -612,7 +612,7 @@ TEST(GapDesigns, AToolThatSlamsShutAtTheCrackAndStrokesBetweenStopsIsJudgedAfter
   EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
   EXPECT_TRUE(names(d, {EffectKind::pivot_friction})) << report_text(d);
   if (!d.effects.empty()) {
-    EXPECT_NEAR(d.effects[0].value[0], 0.3, 0.01) << report_text(d);
+    EXPECT_NEAR(d.effects[0].value[0], 0.31, 0.005) << report_text(d);  // the file's 0.01 and the 0.3 more
   }
 }
 
