@@ -182,10 +182,6 @@ double value_at(const std::vector<double>& t, const std::vector<double>& y, doub
   return (1 - w) * y[j - 1] + w * y[j];
 }
 
-std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay) {
-  return delay == 0 ? y : delayed(t, y, delay, sample_step(t));
-}
-
 std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay, double step) {
   if (delay == 0) return y;
   // value_at at every t[i] - delay, in one walk: those times increase with
@@ -208,10 +204,6 @@ std::vector<double> delayed(const std::vector<double>& t, const std::vector<doub
     out[i] = (1 - w) * y[j - 1] + w * y[j];
   }
   return out;
-}
-
-std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay) {
-  return delay == 0 ? y : delayed_keeping_noise(t, y, delay, sample_step(t));
 }
 
 std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay,

@@ -112,9 +112,8 @@ double value_at(const std::vector<double>& t, const std::vector<double>& y, doub
 
 // y as a sensor `delay` s late reads it: value_at(t, y, t[i] - delay) at
 // every sample, in linear time. `step` is sample_step(t) (derivatives.h),
-// given where it is known (a Replay's `step`), else found.
+// kept with a Replay as its `step`.
 std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay, double step);
-std::vector<double> delayed(const std::vector<double>& t, const std::vector<double>& y, double delay);
 
 // The same, for a prediction carrying the angle's noise (a fit's columns):
 // between evenly spaced samples by a four-point stencil, exact for a line,
@@ -124,7 +123,6 @@ std::vector<double> delayed(const std::vector<double>& t, const std::vector<doub
 // from the angle into the prediction, and read as a late sensor.
 std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay,
                                           double step);
-std::vector<double> delayed_keeping_noise(const std::vector<double>& t, const std::vector<double>& y, double delay);
 
 // The direction of motion, smoothed over a small speed so that a fit's
 // friction term is continuous (rad/s in, -1..1 out).

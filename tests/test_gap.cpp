@@ -12,6 +12,7 @@
 #include <random>
 #include <unistd.h>
 
+#include "derivatives.h"
 #include "diagnose.h"
 #include "load.h"
 #include "patch.h"
@@ -233,10 +234,11 @@ TEST(GapReplay, ADelayBetweenSamplesKeepsTheNoiseItReads) {
   }
   for (double fraction : {0.25, 0.5, 0.8}) {
     const double delay = (7 + fraction) * 1e-3;  // s
-    const std::vector<double> late = delayed_keeping_noise(t, line, delay);
+    const std::vector<double> late = delayed_keeping_noise(t, line, delay, sample_step(t));
     for (size_t i = 10; i < t.size(); ++i) ASSERT_NEAR(late[i], 3 + 2 * (t[i] - delay), 1e-12) << i;
     double kept = 0, linear = 0;
-    const std::vector<double> a = delayed_keeping_noise(t, noise, delay), b = delayed(t, noise, delay);
+    const std::vector<double> a = delayed_keeping_noise(t, noise, delay, sample_step(t)),
+                              b = delayed(t, noise, delay, sample_step(t));
     for (size_t i = 10; i < t.size(); ++i) {
       kept += a[i] * a[i];
       linear += b[i] * b[i];
@@ -252,7 +254,8 @@ TEST(GapReplay, ADelayBetweenSamplesKeepsTheNoiseItReads) {
 // value_at at every shifted time, either way in time.
 TEST(GapReplay, ADelayedSignalIsInterpolatedBetweenUnevenSamples) {
   const std::vector<double> t = {0, 0.001, 0.003, 0.004, 0.006}, y = {0, 1, 5, 4, 10};
-  const std::vector<double> late = delayed(t, y, 0.0015), early = delayed(t, y, -0.0025);
+  const double step = sample_step(t);  // s
+  const std::vector<double> late = delayed(t, y, 0.0015, step), early = delayed(t, y, -0.0025, step);
   const std::vector<double> late_by_hand = {0, 0, 2, 4, 5.5}, early_by_hand = {4, 4.5, 8.5, 10, 10};
   for (size_t i = 0; i < t.size(); ++i) {
     EXPECT_NEAR(late[i], late_by_hand[i], 1e-12) << i;
