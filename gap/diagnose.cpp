@@ -116,17 +116,34 @@ std::vector<Block> blocks_of(const std::vector<Replay>& replays) {
     return ((r.fitted[s] ? 1 / fitted_all : 0.0) + (contact_all > 0 && in_contact(r, s) ? 1 / contact_all : 0.0)) /
            halves;
   };
+  std::vector<double> owns(replays.size(), 0.0);
+  std::vector<size_t> fitted(replays.size(), 0), counts(replays.size());
+  for (size_t i = 0; i < replays.size(); ++i) {
+    const Replay& r = replays[i];
+    for (size_t s = 0; s < r.t.size(); ++s) {
+      owns[i] += fitted_all > 0 ? mass(r, s) : 0.0;
+      fitted[i] += r.fitted[s] ? 1 : 0;
+    }
+    const auto share = static_cast<size_t>(std::lround(static_cast<double>(kBlocks) * owns[i]));
+    counts[i] = std::clamp<size_t>(share, 1, std::max<size_t>(1, fitted[i] / kMinBlock));
+  }
+  // A way up held in one block alone is judged by folds fitted on the
+  // others' alone: one way up cannot tell a weight from a preload, and
+  // the held-out trace then judges a wild guess (the tongs turned 90 deg
+  // in one trace of three, development seed 3140). Its trace is cut in two
+  // where it holds enough, so that every fold fits on each way up.
+  for (size_t i = 0; i < replays.size(); ++i) {
+    size_t same_way = 0, other_way = 0;
+    for (size_t j = 0; j < replays.size(); ++j) {
+      (replays[j].turned == replays[i].turned ? same_way : other_way) += counts[j];
+    }
+    if (same_way == 1 && other_way > 0 && fitted[i] >= 2 * kMinBlock) counts[i] = 2;
+  }
   std::vector<Block> out;
   for (size_t i = 0; i < replays.size(); ++i) {
     const Replay& r = replays[i];
-    double own = 0;
-    size_t fitted = 0;
-    for (size_t s = 0; s < r.t.size(); ++s) {
-      own += fitted_all > 0 ? mass(r, s) : 0.0;
-      fitted += r.fitted[s] ? 1 : 0;
-    }
-    const auto share = static_cast<size_t>(std::lround(static_cast<double>(kBlocks) * own));
-    const size_t blocks = std::clamp<size_t>(share, 1, std::max<size_t>(1, fitted / kMinBlock));
+    const double own = owns[i];
+    const size_t blocks = counts[i];
     // Cut where the running share passes each b / blocks of the trace's;
     // a block left with fewer than kMinBlock fitted samples joins the next
     // (the last joins the one before).
@@ -858,6 +875,16 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     d.verdict = Verdict::none;
     d.steps.push_back("  nothing cuts it, and the nominal's residual is within the noise's tolerance with no clear shape "
                       "(under twice the whiteness test's point): no gap shown");
+  } else if (d.folds < 2) {
+    // One block: every fit would be judged on the samples it was fitted
+    // to, which no set can fail. Nothing is fitted, and the report says so
+    // (not a bare shrink of 0).
+    d.verdict = Verdict::unexplained;
+    std::snprintf(line, sizeof line,
+                  "  one block of %zu samples the model predicts: no fit can be judged on samples it was not fitted to "
+                  "(two blocks of %zu at least); ",
+                  judged_samples, kMinBlock);
+    d.steps.push_back(line + std::string("measure longer, or more traces"));
   } else if (chosen.empty() || gain_alike || !(effects_match(current_scored) || d.residual.white)) {
     d.verdict = Verdict::unexplained;
   } else {

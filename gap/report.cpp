@@ -136,9 +136,11 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
                   manifest_of(l.chosen).name, manifest_of(l.alike).name, both ? ", nor from both" : "", l.cosine);
     out += line + l.separate + "\n";
   }
-  std::snprintf(line, sizeof line, "residual: %s (Ljung-Box Q = %.1f, white below %.1f); it follows %s (correlation %.2f)\n",
-                d.residual.white ? "white" : "structured", d.residual.q, d.residual.threshold, d.residual.follows.c_str(),
-                d.residual.correlation);
+  std::snprintf(line, sizeof line,
+                "residual: %s (Ljung-Box Q = %.1f, white below %.1f; structured share %.1f %%); it follows %s "
+                "(correlation %.2f)\n",
+                d.residual.white ? "white" : "structured", d.residual.q, d.residual.threshold, 100 * d.residual.share,
+                d.residual.follows.c_str(), d.residual.correlation);
   out += line;
   if (d.verdict == Verdict::unexplained) {
     out += "nothing in the library explains what is left";
@@ -279,6 +281,7 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
              {{"white", d.residual.white},
               {"ljung_box_q", num(d.residual.q)},
               {"threshold", num(d.residual.threshold)},
+              {"structured_share", num(d.residual.share)},
               {"follows", d.residual.follows},
               {"correlation", num(d.residual.correlation)}}}};
   if (d.per_trace.computed) {

@@ -150,11 +150,14 @@ ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std
     for (long j = -kMemory; j <= kMemory; ++j) v += at(g, j) * at(g, j) + at(g, j + k) * at(g, j - k);
     return v / nn;
   };
+  double excess = 0;
   for (long k = 1; k <= kLags; ++k) {
     const double variance = bartlett(null, k) + (noise != nullptr ? bartlett(colour, k) : 0.0);
     const double d = gamma[static_cast<size_t>(k)] - colour[static_cast<size_t>(k)];
     if (variance > 0) t.q += d * d / variance;
+    excess += d * d;
   }
+  t.share = std::sqrt(excess / kLags) / gamma[0];
   t.white = t.q <= t.threshold;
   return t;
 }

@@ -16,6 +16,7 @@ struct ResidualTest {
   double q = 0;          // the sum over lags of each lag's squared excess over its Bartlett variance
   double threshold = 0;  // chi-square's 99 % point for 20 lags
   bool white = false;
+  double share = 0;      // the structured share of its variance: lags 1-20's excess correlation, root mean square
   std::string follows;   // the signal it correlates with most ("the direction of motion", ...)
   double correlation = 0;
 };

@@ -2,8 +2,9 @@
 // trace whose actee cracks in the first cycle while the tool goes on,
 // closing-only strokes, one orientation, a noise-free trace, white angle
 // noise through a heavy arm, a force sensor's slightly coloured noise,
-// ringing after contact, a force sensor's gain
-// error (told as a gain, not named; one far off is no gain), a late force
+// one block of samples, ringing after contact, a force sensor's gain
+// error (told as a gain, not named; one far off is no gain), a way up one
+// short trace holds, a late force
 // sensor after rests, a tool that slams shut at the crack and strokes
 // between its stops, a light squeeze of the hazelnut (a late sensor's
 // fraction of a sample, friction sticking at the turn), friction or
@@ -401,6 +402,20 @@ TEST(GapDesigns, ATraceWithNothingToJudgeIsNotCalledAMatch) {
   EXPECT_THAT(report_text(d), testing::HasSubstr("too few samples to judge anything on: 0 the model predicts"));
 }
 
+TEST(GapDesigns, OneBlockOfSamplesSaysNoFitCanBeJudged) {
+  // One closing stroke of 0.45 s with friction the file lacks: a few
+  // hundred samples the model predicts make one block, and a fit judged
+  // on the samples it was fitted to says nothing. The report says why.
+  Truth truth;
+  truth.friction = 0.1;
+  const Diagnosis d = diagnose(
+      load_measurement(measurement("oneblock", {{"a.csv", trace(truth, 43, 0.45, 0, sine(8 * kDeg, 28 * kDeg, 1.0))}})
+                           .string()));
+  EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
+  EXPECT_EQ(d.folds, 1U) << report_text(d);
+  EXPECT_THAT(report_text(d), testing::HasSubstr("one block of")) << report_text(d);
+}
+
 TEST(GapDesigns, RingingTheSamplesCannotResolveIsLeftOutNotNamed) {
   // 140 Hz ringing of 2e-3 rad, decaying in 30 ms, each time the arm
   // passes 12 deg closing (stiff jaws touching): its acceleration carries
@@ -491,6 +506,25 @@ TEST(GapDesigns, AWeightTheTurnedToolShowsIsNotTakenForAGain) {
   EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
   EXPECT_TRUE(names(d, {EffectKind::gravity})) << report_text(d);
   EXPECT_TRUE(std::isnan(d.gain_alike)) << report_text(d);
+}
+
+TEST(GapDesigns, AWayUpOneShortTraceHoldsIsInEveryFoldsFit) {
+  // A weight and a preload the file lacks, told apart only by the short
+  // trace with the tool turned 90 deg. Were that trace one block, the fold
+  // that judges it would fit on the level traces alone, where the weight's
+  // cosine is all but the preload's constant, and judge a wild guess.
+  Truth truth;
+  truth.weight = 0.05;
+  truth.effort_noise = 0.05;
+  const auto drive = sine(4 * kDeg, 10 * kDeg, 1.5);
+  const auto preload = [](double, const Motion&) { return 0.02; };  // N*m
+  const Diagnosis d = diagnose(load_measurement(
+      measurement("shortturn", {{"a.csv", trace(truth, 11, 3, 0, drive, preload)},
+                                {"b.csv", trace(truth, 12, 3, 0, drive, preload)},
+                                {"c.csv,turned: 90 deg", trace(truth, 13, 1.5, 90 * kDeg, drive, preload)}})
+          .string()));
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  EXPECT_TRUE(names(d, {EffectKind::gravity, EffectKind::spring_preload})) << report_text(d);
 }
 
 // The hazelnut at 75 mm in the nutcracker's jaws: its lever arm, its
