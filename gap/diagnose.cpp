@@ -855,13 +855,16 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // matches any model, and says nothing of which.
   size_t judged_samples = 0;
   for (const FoldSize& f : d.fold_sizes) judged_samples += f.fitted;
-  if (judged_samples < kMinBlock) {
+  // Unexplained, for nothing could be judged: why, and what to measure.
+  auto unjudged = [&](const std::string& why, const char* measure) {
     d.verdict = Verdict::unexplained;
-    std::snprintf(line, sizeof line,
-                  "  too few samples to judge anything on: %zu the model predicts (at least %zu), the rest reversals, "
-                  "rests, limits or motion the samples do not resolve; ",
-                  judged_samples, kMinBlock);
-    d.steps.push_back(line + std::string("measure longer, or slower, or more traces"));
+    d.steps.push_back("  " + why + "; " + measure);
+  };
+  const std::string predicted = std::to_string(judged_samples) + " the model predicts";
+  if (judged_samples < kMinBlock) {
+    unjudged("too few samples to judge anything on: " + predicted + " (at least " + std::to_string(kMinBlock) +
+                 "), the rest reversals, rests, limits or motion the samples do not resolve",
+             "measure longer, or slower, or more traces");
   } else if (nominal_matched) {
     d.verdict = Verdict::none;
   } else if (chosen.empty() && nominal_within && white_under(nominal)) {
@@ -879,12 +882,9 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // One block: every fit would be judged on the samples it was fitted
     // to, which no set can fail. Nothing is fitted, and the report says so
     // (not a bare shrink of 0).
-    d.verdict = Verdict::unexplained;
-    std::snprintf(line, sizeof line,
-                  "  one block of %zu samples the model predicts: no fit can be judged on samples it was not fitted to "
-                  "(two blocks of %zu at least); ",
-                  judged_samples, kMinBlock);
-    d.steps.push_back(line + std::string("measure longer, or more traces"));
+    unjudged("one block of " + predicted + ": no fit can be judged on samples it was not fitted to (two blocks of " +
+                 std::to_string(kMinBlock) + " at least)",
+             "measure longer, or more traces");
   } else if (chosen.empty() || gain_alike || !(effects_match(current_scored) || d.residual.white)) {
     d.verdict = Verdict::unexplained;
   } else {
