@@ -85,8 +85,13 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
   std::snprintf(line, sizeof line, "shrink: %.0f %%, %s, where the gap is the largest against the noise\n",
                 100 * d.shrink, d.shrink_in_contact ? "in the actee's contact" : "over every sample");
   out += line;
-  std::snprintf(line, sizeof line, "judged by cross-validation over %zu folds of %zu blocks of %zu traces (fitted samples:",
-                d.folds, d.judged_on.size(), d.traces);
+  if (d.folds < 2) {
+    std::snprintf(line, sizeof line, "not cross-validated: one block of %zu trace%s (fitted samples:", d.traces,
+                  d.traces == 1 ? "" : "s");
+  } else {
+    std::snprintf(line, sizeof line, "judged by cross-validation over %zu folds of %zu blocks of %zu traces (fitted samples:",
+                  d.folds, d.judged_on.size(), d.traces);
+  }
   out += line;
   for (const FoldSize& f : d.fold_sizes) out += " " + std::to_string(f.fitted);
   std::snprintf(line, sizeof line, ")\n");

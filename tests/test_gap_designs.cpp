@@ -414,6 +414,7 @@ TEST(GapDesigns, OneBlockOfSamplesSaysNoFitCanBeJudged) {
   EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
   EXPECT_EQ(d.folds, 1U) << report_text(d);
   EXPECT_THAT(report_text(d), testing::HasSubstr("one block of")) << report_text(d);
+  EXPECT_THAT(report_text(d), testing::HasSubstr("not cross-validated")) << report_text(d);
 }
 
 TEST(GapDesigns, RingingTheSamplesCannotResolveIsLeftOutNotNamed) {
