@@ -327,6 +327,7 @@ Model compile_with(const Measurement& m, const std::vector<EffectFit>& effects) 
       }
     }
     with.options.effects.push_back(spec);
+    if (e.kind == EffectKind::actee_compliance && with.actee) with.actee->stiffness *= e.stiffness_factor;
   }
   return m.rig == Rig::lever ? compile_measurement(with) : compile_actee_only(*with.actee, with.options);
 }
@@ -772,8 +773,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     if (!d.look_alikes.empty() && d.ambiguous.empty()) d.ambiguous.push_back(chosen);
     // Where one effect has one look-alike, the two at once fit as well as
     // either (their columns all but parallel): the data cannot tell a
-    // weight from a preload one way up, nor from both.
-    const bool both_too = d.look_alikes.size() == 1 && chosen.size() < static_cast<size_t>(kMaxEffects);
+    // weight from a preload one way up, nor from both. Listed only where
+    // the two make a pair: beside a second chosen effect they would make
+    // three, and where a pair explains the data do not ask for a third
+    // (the smallest set that explains, above).
+    const bool both_too = d.look_alikes.size() == 1 && chosen.size() == 1;
     for (const LookAlike& l : d.look_alikes) {
       std::vector<EffectKind> set = chosen;
       std::replace(set.begin(), set.end(), l.chosen, l.alike);

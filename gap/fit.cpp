@@ -14,6 +14,9 @@ namespace afford {
 namespace {
 
 constexpr double kMinExponent = 0.5, kMaxExponent = 4.0;  // the actee's power laws searched
+// m: the references a law is written with, a deflection an actee can have
+// (the file takes up to 1 m): beyond them the law is all but linear.
+constexpr double kLeastReference = 1e-6, kMostReference = 1.0;
 constexpr int kMaxRounds = 5;   // of the alternating search for a delay and an exponent together
 constexpr int kShiftSteps = 60;  // the grid of a preload's compression shift searched with a progressive spring
 // After its first round, each is searched this far either side of where it was, on a grid of kNearSteps.
@@ -587,12 +590,25 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
     e.sigma[0] = curvature_sigma([&](double x) { return Nonlinear{best.delay, x, best.compression_shift}; },
                                  best.exponent, 0.01);
     if (!(c > 0)) out.valid = false;
-    // A law that is linear has no reference; 1 mm stands for any.
-    e.value[1] = std::abs(best.exponent - 1) < 1e-6 || !(c > 0) ? 1e-3 : std::pow(c, 1 / (1 - best.exponent));
-    e.sigma[1] = std::abs(best.exponent - 1) < 1e-6 || !(c > 0)
-                     ? 0.0
-                     : e.value[1] * std::abs(best_sigma.back() / c / (1 - best.exponent));
-    if (!(e.value[1] > 0 && e.value[1] <= 1)) out.writable = false;
+    const bool linear_law = std::abs(best.exponent - 1) < 1e-6;
+    e.value[1] = linear_law || !(c > 0) ? 1e-3 : std::pow(c, 1 / (1 - best.exponent));
+    e.sigma[1] = linear_law || !(c > 0) ? 0.0 : e.value[1] * std::abs(best_sigma.back() / c / (1 - best.exponent));
+    // The law is c * stiffness * deflection^n. Its reference holds c only
+    // where n is off 1: a law all but linear that is softer or stiffer than
+    // the file's would need one far beyond the actee (5 m for 7 % softer
+    // at n = 1.045; MuJoCo's jaws on a nut, development seeds 3067, 3202,
+    // 3281) or far below any deflection (1e-241 m for 20 % softer at
+    // n = 0.9996), and a linear one none at all (1 mm stands for any).
+    // Then the law is written at the nominal's reference (1 mm for a
+    // linear nominal), the actee's stiffness scaled to keep c.
+    if (c > 0 && (linear_law || !(e.value[1] >= kLeastReference && e.value[1] <= kMostReference))) {
+      const double written_at = model_.actee_reference > 0 ? model_.actee_reference : 1e-3;  // m
+      e.value[1] = written_at;
+      e.sigma[1] = 0;
+      e.stiffness_factor = c * std::pow(written_at, best.exponent - 1);
+      e.stiffness_factor_sigma = best_sigma.back() * std::pow(written_at, best.exponent - 1);
+    }
+    if (!(e.value[1] > 0 && e.value[1] <= kMostReference)) out.writable = false;
     out.effects.push_back(e);
   }
   if (latency) {

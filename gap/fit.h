@@ -20,6 +20,10 @@ struct EffectFit {
   EffectKind kind = EffectKind::pivot_friction;
   std::array<double, 2> value{};  // SI, in the manifest's order (the nominal value included)
   std::array<double, 2> sigma{};  // one standard error, same units
+  // actee_compliance: the actee's `stiffness` times this (1 but where the
+  // law's own reference would lie beyond 1 m: fit.cpp), and its standard error.
+  double stiffness_factor = 1;
+  double stiffness_factor_sigma = 0;
 };
 
 struct SetFit {

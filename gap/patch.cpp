@@ -40,6 +40,12 @@ YAML::Node patched(const std::string& file, const std::vector<EffectFit>& fits, 
       continue;
     }
     root["effects"][m.name] = effect;
+    // A law whose reference keeps the file's, its stiffness scaled (fit.h).
+    if (e.kind == EffectKind::actee_compliance && e.stiffness_factor != 1) {
+      char stiffness[64];
+      std::snprintf(stiffness, sizeof stiffness, "%.6g N/m", e.stiffness_factor * nominal.actee_stiffness);
+      root["stiffness"] = stiffness;
+    }
   }
   return root;
 }

@@ -126,6 +126,16 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
       }
       out += line;
     }
+    if (e.stiffness_factor != 1) {
+      std::snprintf(line, sizeof line, ", the actee's stiffness times %.4g +- %.2g", e.stiffness_factor,
+                    e.stiffness_factor_sigma);
+      out += line;
+      if (nominal != nullptr) {
+        std::snprintf(line, sizeof line, " (%.4g N/m in all, the nominal %.4g)",
+                      e.stiffness_factor * nominal->actee_stiffness, nominal->actee_stiffness);
+        out += line;
+      }
+    }
     out += "\n";
   }
   for (const auto& set : d.ambiguous) {
@@ -242,7 +252,13 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
                                      {"unit", m.params[i].dimension == dim::none ? "" : si_unit(m.params[i])},
                                      {"uncertainty", num(fit.sigma[i])}};
     }
-    effects.push_back({{"name", m.name}, {"parameters", parameters}});
+    Json effect = {{"name", m.name}, {"parameters", parameters}};
+    // An actee's law: its stiffness times this (1 but where the law keeps
+    // the nominal's reference: fit.h).
+    if (fit.kind == EffectKind::actee_compliance) {
+      effect["stiffness_factor"] = {{"value", num(fit.stiffness_factor)}, {"uncertainty", num(fit.stiffness_factor_sigma)}};
+    }
+    effects.push_back(effect);
   }
   Json ambiguous = Json::array();
   for (const auto& set : d.ambiguous) {

@@ -223,6 +223,33 @@ TEST(GapDesigns, OneOrientationCannotTellTheWeightFromAPreload) {
   EXPECT_THAT(report_text(d), ::testing::HasSubstr("turn the tool")) << report_text(d);
 }
 
+TEST(GapDesigns, APairWithALookAlikeListsPairsNotThreeEffects) {
+  // 0.1 N*m of unmodelled weight and 0.08 N*m more friction, one way up:
+  // the weight cannot be told from a preload, the friction can (it turns
+  // with the motion). Friction with the weight or with a preload fit
+  // alike; all three would too, but where a pair explains the data do not
+  // ask for a third, so it is not among the sets.
+  Truth truth;
+  truth.weight = 0.1;
+  truth.friction = 0.08;
+  const auto drive = sine(8 * kDeg, 28 * kDeg, 1.0);
+  const Diagnosis d = diagnose(load_measurement(
+      measurement("pair", {{"a.csv", trace(truth, 1, 10, 0, drive)}, {"b.csv", trace(truth, 2, 10, 0, drive)}})
+          .string()));
+  EXPECT_EQ(d.verdict, Verdict::ambiguous) << report_text(d);
+  auto listed = [&](std::vector<EffectKind> set) {
+    std::sort(set.begin(), set.end());
+    return std::any_of(d.ambiguous.begin(), d.ambiguous.end(), [&](std::vector<EffectKind> s) {
+      std::sort(s.begin(), s.end());
+      return s == set;
+    });
+  };
+  EXPECT_TRUE(listed({EffectKind::gravity, EffectKind::pivot_friction})) << report_text(d);
+  EXPECT_TRUE(listed({EffectKind::spring_preload, EffectKind::pivot_friction})) << report_text(d);
+  for (const auto& set : d.ambiguous) EXPECT_LE(set.size(), 2u) << report_text(d);
+  EXPECT_THAT(report_text(d), ::testing::HasSubstr("turn the tool")) << report_text(d);
+}
+
 TEST(GapDesigns, ANoiseFreeTraceWithFrictionIsExplained) {
   // No noise at all: the effort printed to 1e-6 N, the angle to 1e-9 rad.
   // What the file could hold is the floor; friction takes the gap to it.
@@ -1011,6 +1038,35 @@ TEST(GapDesigns, AnActeesLawOneTraceAloneSqueezesIsJudgedOnFoldsThatHoldItsConta
     EXPECT_NEAR(d.effects[0].value[0], 1.5, 0.1) << report_text(d);
   }
   EXPECT_GT(d.folds, 3u) << report_text(d);
+}
+
+TEST(GapDesigns, AnActeeSofterThanItsFileByTheSameLawIsNamedWithItsStiffness) {
+  // The real nut follows its file's law k d h/(h - d), 20 % softer. A
+  // power law keeps the file's stiffness at its reference, so an exponent
+  // of 1 cannot say this, and one all but 1 says it only with a reference
+  // far beyond the nut (0.8 at n = 1.001 is a reference of 1e97 m), which
+  // no file takes: the law is then written at 1 mm, the stiffness scaled.
+  const Jaws j = hazelnut_jaws();
+  Truth truth;
+  truth.angle_noise = 1e-4;
+  const auto softer = [&](double, const Motion& m) {  // N*m: a fifth of the file's law's torque, taken off
+    const double d = std::max(0.0, j.a * (j.theta_c - m.theta));
+    return -0.2 * 270e3 * d * j.h / (j.h - d) * j.a;
+  };
+  const auto squeeze = sine(j.theta_c - 0.7 * kDeg, j.theta_c + 3 * kDeg, 1.0);
+  const auto clear = sine(j.theta_c + 0.5 * kDeg, j.theta_c + 8 * kDeg, 1.0);
+  const Diagnosis d = diagnose(load_measurement(
+      squeeze_measurement("softer", {squeeze_trace(truth, j, 1, 6, squeeze, softer), squeeze_trace(truth, j, 2, 6, clear),
+                                     squeeze_trace(truth, j, 3, 6, clear)})
+          .string()));
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  ASSERT_TRUE(names(d, {EffectKind::actee_compliance})) << report_text(d);
+  const EffectFit& law = d.effects[0];
+  EXPECT_NEAR(law.value[0], 1.0, 0.05) << report_text(d);
+  EXPECT_DOUBLE_EQ(law.value[1], 1e-3) << report_text(d);
+  // At 1 mm, about the deepest squeeze, the law is the stiffness times it.
+  EXPECT_NEAR(law.stiffness_factor, 0.8, 0.03) << report_text(d);
+  EXPECT_THAT(report_text(d), ::testing::HasSubstr("the actee's stiffness times")) << report_text(d);
 }
 
 // Quick strokes onto the hazelnut and holds: from 3 deg short of its touch
