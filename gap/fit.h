@@ -21,7 +21,8 @@ struct EffectFit {
   std::array<double, 2> value{};  // SI, in the manifest's order (the nominal value included)
   std::array<double, 2> sigma{};  // one standard error, same units
   // actee_compliance: the actee's `stiffness` times this (1 but where the
-  // law's own reference would lie beyond 1 m: fit.cpp), and its standard error.
+  // law's own reference would lie outside 1 um to 1 m: fit.cpp), and its
+  // standard error.
   double stiffness_factor = 1;
   double stiffness_factor_sigma = 0;
 };

@@ -31,6 +31,7 @@
 
 #include "diagnose.h"
 #include "load.h"
+#include "patch.h"
 #include "report.h"
 #include "state.h"
 #include "test_util.h"
@@ -1055,10 +1056,11 @@ TEST(GapDesigns, AnActeeSofterThanItsFileByTheSameLawIsNamedWithItsStiffness) {
   };
   const auto squeeze = sine(j.theta_c - 0.7 * kDeg, j.theta_c + 3 * kDeg, 1.0);
   const auto clear = sine(j.theta_c + 0.5 * kDeg, j.theta_c + 8 * kDeg, 1.0);
-  const Diagnosis d = diagnose(load_measurement(
+  const Measurement m = load_measurement(
       squeeze_measurement("softer", {squeeze_trace(truth, j, 1, 6, squeeze, softer), squeeze_trace(truth, j, 2, 6, clear),
                                      squeeze_trace(truth, j, 3, 6, clear)})
-          .string()));
+          .string());
+  const Diagnosis d = diagnose(m);
   EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
   ASSERT_TRUE(names(d, {EffectKind::actee_compliance})) << report_text(d);
   const EffectFit& law = d.effects[0];
@@ -1067,6 +1069,11 @@ TEST(GapDesigns, AnActeeSofterThanItsFileByTheSameLawIsNamedWithItsStiffness) {
   // At 1 mm, about the deepest squeeze, the law is the stiffness times it.
   EXPECT_NEAR(law.stiffness_factor, 0.8, 0.03) << report_text(d);
   EXPECT_THAT(report_text(d), ::testing::HasSubstr("the actee's stiffness times")) << report_text(d);
+  // The patch writes the law and the stiffness that keep it.
+  const fs::path patch = test::fresh_dir("gapdesign", "softer-patch");
+  (void)write_patch(m, d, patch.string());
+  const ActeeSpec written = load_actee((patch / "actee.yaml").string());
+  EXPECT_NEAR(written.stiffness, law.stiffness_factor * 270e3, 1.0);
 }
 
 // Quick strokes onto the hazelnut and holds: from 3 deg short of its touch
