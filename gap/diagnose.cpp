@@ -473,7 +473,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     size_t n = 0;
     for (size_t k = 0; k < fold_fitters.size(); ++k) {
       const SetFit g = fold_fitters[k].fit(set, &f);
-      f.valid = f.valid && f.writable && g.valid;  // the folds' laws need only be physical
+      f.valid = f.valid && g.valid;
       sq += g.rmse_test * g.rmse_test * g.w_test;
       weights += g.w_test;
       n += g.n_test;

@@ -608,7 +608,6 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
       e.stiffness_factor = c * std::pow(written_at, best.exponent - 1);
       e.stiffness_factor_sigma = best_sigma.back() * std::pow(written_at, best.exponent - 1);
     }
-    if (!(e.value[1] > 0 && e.value[1] <= kMostReference)) out.writable = false;
     out.effects.push_back(e);
   }
   if (latency) {

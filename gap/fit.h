@@ -39,10 +39,6 @@ struct SetFit {
   size_t n_test = 0;
   double w_test = 0;
   bool valid = true;        // false: a fitted value outside its physical range (a negative friction, ...)
-  // false: a value its file does not take. A power law all but linear
-  // puts its reference far off (its coefficient is reference^(1 - n)),
-  // a law still, but not one to write down.
-  bool writable = true;
   // What residual() needs to predict again.
   std::vector<EffectKind> linear;  // the linear effects, in coef's order
   std::vector<double> coef;        // their fitted changes, then the power law's coefficient if any

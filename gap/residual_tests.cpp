@@ -157,7 +157,7 @@ ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std
     if (variance > 0) t.q += d * d / variance;
     excess += d * d;
   }
-  t.share = std::sqrt(excess / kLags) / gamma[0];
+  t.share = gamma[0] > 0 ? std::sqrt(excess / kLags) / gamma[0] : 0.0;  // a residual of zeros has no shape
   t.white = t.q <= t.threshold;
   return t;
 }
