@@ -690,7 +690,14 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       }
       if (branches.size() > 1) d.steps.push_back("  as good: " + sets_text({branches.begin() + 1, branches.end()}));
       current_scored = pick.scored;
-      if (effects_match(current_scored)) break;
+      // At the floor with its shape still plain, the set may stand for part
+      // of the gap only: where a stiff actee's contact holds most samples,
+      // the motion's noise through it raises the floor over every sample,
+      // and a progressive spring reached it leaving a friction's flip in
+      // every stroke (development seed 3123). The search goes on; the next
+      // effect must still earn its place.
+      const bool plain_at_floor = within(current_scored, 1.0) && !white_under(current_scored.fit);
+      if (effects_match(current_scored) && !plain_at_floor) break;
     }
   }
   // Forward selection adds one effect at a time, each for what it cuts

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "counted_step.h"
 #include "files.h"
 #include "units.h"
 
@@ -199,7 +200,16 @@ Trace parse_trace(const std::string& text, const std::string& path, const TableF
            format_quantity(t.back(), dim::time));
     }
   }
-  for (size_t s = 0; s < kSignals; ++s) trace.resolution[s] = printed_resolution(digits[s]) * format.scale[s];
+  for (size_t s = 0; s < kSignals; ++s) {
+    trace.resolution[s] = printed_resolution(digits[s]) * format.scale[s];
+    // A measured signal counted in steps coarser than its digits (an
+    // encoder's counts, a converter's bits) rounds to those steps: a slow
+    // motion read by an encoder is a staircase, its noise the rounding's.
+    const auto signal = static_cast<Signal>(s);
+    if (signal == Signal::t || signal == Signal::broken) continue;
+    const double step = counted_step(trace.column[s], trace.resolution[s] * std::sqrt(12.0));
+    trace.resolution[s] = std::max(trace.resolution[s], step / std::sqrt(12.0));
+  }
   if (trace.size() < min_rows) {
     fail(SourceLoc{path, last_row, 1},
          "a trace of at least " + std::to_string(min_rows) + " rows (to fit on part and judge on the rest)",

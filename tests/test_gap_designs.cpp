@@ -1131,5 +1131,71 @@ TEST(GapDesigns, AHeavyArmBesideADampingNearTheFloorIsNamed) {
   }
 }
 
+
+// A squeeze of the hazelnut read by an encoder: each 3.9 s the arm closes
+// from 4 deg over its touch in 0.5 s, squeezes it 0.5 deg in 0.4 s, lets
+// go in 1 s and opens again in 2 s (a half cosine each), with 0.08 N of
+// noise at the effort. The angle is the encoder's count of `count` rad,
+// printed to 1e-7 rad: still or slow, it stays on one count for many
+// samples, a staircase whose only noise is its rounding. `extra` (N*m) is
+// added to the effort's torque as in trace().
+std::string encoder_trace(const Truth& h, const Jaws& j, double count,
+                          const std::function<double(double, const Motion&)>& extra = nullptr) {
+  auto leg = [](double t, double span, double from, double to) {
+    const double w = kPi / span, half = 0.5 * (to - from);
+    return Motion{from + half * (1 - std::cos(w * t)), half * w * std::sin(w * t), half * w * w * std::cos(w * t)};
+  };
+  const double touch = j.theta_c, open = touch + 4 * kDeg, shut = touch - 0.5 * kDeg;
+  std::mt19937 random(1);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  std::string csv = "t,angle,effort_force\n";
+  for (int i = 0; i < 7800; ++i) {
+    const double t = i * 1e-3;
+    double u = std::fmod(t, 3.9);
+    const Motion m = u < 0.5               ? leg(u, 0.5, open, touch)
+                     : (u -= 0.5) < 0.4 ? leg(u, 0.4, touch, shut)
+                     : (u -= 0.4) < 1.0 ? leg(u, 1.0, shut, touch)
+                                         : leg(u - 1.0, 2.0, touch, open);
+    const double d = std::max(0.0, j.a * (j.theta_c - m.theta));
+    double tau = torque(h, m.theta, m.omega, m.alpha, 0, 270e3 * d * j.h / (j.h - d), j.a);
+    if (extra) tau += extra(t, m);
+    char row[160];
+    std::snprintf(row, sizeof row, "%.3f,%.7f,%.6f\n", t, count * std::round(m.theta / count),
+                  tau / kB + 0.08 * unit(random));
+    csv += row;
+  }
+  return csv;
+}
+
+TEST(GapDesigns, AnEncodersCountIsTheAnglesNoiseNotMotionTheSamplesMiss) {
+  // 4096 counts a turn (1.534e-3 rad). Taken for digits of 1e-7 rad, the
+  // staircase was motion no polynomial follows: every sample was left out
+  // and nothing could be judged. Read as counts, the effect-free tool
+  // matches its file.
+  const Jaws j = hazelnut_jaws();
+  const Diagnosis d = diagnose(load_measurement(
+      squeeze_measurement("encoder", {encoder_trace(Truth{}, j, 2 * kPi / 4096)}).string()));
+  EXPECT_EQ(d.verdict, Verdict::none) << report_text(d);
+  size_t fitted = 0;
+  for (const FoldSize& f : d.fold_sizes) fitted += f.fitted;
+  EXPECT_GT(fitted, 3000u) << report_text(d);
+}
+
+TEST(GapDesigns, FrictionAndAProgressiveSpringReadThroughAnEncoderAreNamed) {
+  // 34925 counts a turn (1.799e-4 rad), 0.02 N*m more friction and a
+  // progressive spring of 4e7 N/m^3 on the spring's compression.
+  const Jaws j = hazelnut_jaws();
+  Truth truth;
+  truth.friction = 0.02;
+  const auto progressive = [](double, const Motion& m) {
+    const double d = 0.010 * (30 * kDeg - m.theta) + 1.5 / 2000;  // m, the spring's compression
+    return 4e7 * d * d * d * 0.010;
+  };
+  const Diagnosis d = diagnose(load_measurement(
+      squeeze_measurement("encoder-effects", {encoder_trace(truth, j, 2 * kPi / 34925, progressive)}).string()));
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  EXPECT_TRUE(names(d, {EffectKind::pivot_friction, EffectKind::progressive_spring})) << report_text(d);
+}
+
 }  // namespace
 }  // namespace afford::test
