@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace afford {
 namespace {
@@ -47,7 +48,7 @@ double counted_step(const std::vector<double>& values, double printed) {
   // The least change is one step, as printed: refined first on the changes
   // whose count is sure, then on all.
   const double sure = fitted_step(changes, least, kSureCount * least);
-  const double step = fitted_step(changes, sure, INFINITY);
+  const double step = fitted_step(changes, sure, std::numeric_limits<double>::infinity());
   size_t divided = 0, single = 0;
   for (double c : changes) {
     const double k = std::round(c / step);

@@ -1086,6 +1086,7 @@ TEST(Gap, AFrictionLeftUnderAFloorTheActeesContactRaisesIsNamed) {
 // The step a measured column is counted in, worked by hand: an encoder's
 // count of 2 pi / 34925 rad = 1.799e-4 rad, printed to 1e-7 rad; a
 // converter's bit of 0.110328 N printed to 1e-6 N.
+
 // Counts of `step` from `offset` at each of `counts`, printed to `printed`.
 std::vector<double> counted(double offset, double step, double printed, const std::vector<long>& counts) {
   std::vector<double> out;

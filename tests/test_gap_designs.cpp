@@ -12,7 +12,8 @@
 // leads to (the smallest set that explains), a heavy arm in strokes
 // recorded apart, and caught at each with a late sensor, an actee's law one trace
 // alone squeezes, quick strokes onto a stiff actee (its kink at the touch
-// is the angle's, through its law). Every trace is written by the
+// is the angle's, through its law), a squeeze read by an encoder whose
+// counts are coarser than its digits. Every trace is written by the
 // formulas here (moment balance of the shipped nutcracker: 2000 N/m at
 // 10 mm, 1.5 N preload, 0.01 N*m of friction, rest 30 deg, measured at
 // 160 mm), not by the solver.
