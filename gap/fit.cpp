@@ -590,23 +590,27 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
     e.sigma[0] = curvature_sigma([&](double x) { return Nonlinear{best.delay, x, best.compression_shift}; },
                                  best.exponent, 0.01);
     if (!(c > 0)) out.valid = false;
-    const bool linear_law = std::abs(best.exponent - 1) < 1e-6;
-    e.value[1] = linear_law || !(c > 0) ? 1e-3 : std::pow(c, 1 / (1 - best.exponent));
-    e.sigma[1] = linear_law || !(c > 0) ? 0.0 : e.value[1] * std::abs(best_sigma.back() / c / (1 - best.exponent));
     // The law is c * stiffness * deflection^n. Its reference holds c only
     // where n is off 1: a law all but linear that is softer or stiffer than
     // the file's would need one far beyond the actee (5 m for 7 % softer
     // at n = 1.045; MuJoCo's jaws on a nut, development seeds 3067, 3202,
     // 3281) or far below any deflection (1e-241 m for 20 % softer at
-    // n = 0.9996), and a linear one none at all (1 mm stands for any).
-    // Then the law is written at the nominal's reference (1 mm for a
-    // linear nominal), the actee's stiffness scaled to keep c.
-    if (c > 0 && (linear_law || !(e.value[1] >= kLeastReference && e.value[1] <= kMostReference))) {
+    // n = 0.9996), and a linear one none at all. Then the law is written
+    // at the nominal's reference (1 mm for a linear nominal), the actee's
+    // stiffness scaled to keep c.
+    const bool linear_law = std::abs(best.exponent - 1) < 1e-6;
+    const double own_reference = linear_law || !(c > 0) ? 0.0 : std::pow(c, 1 / (1 - best.exponent));  // m
+    if (own_reference >= kLeastReference && own_reference <= kMostReference) {
+      e.value[1] = own_reference;
+      e.sigma[1] = own_reference * std::abs(best_sigma.back() / c / (1 - best.exponent));
+    } else {
       const double written_at = model_.actee_reference > 0 ? model_.actee_reference : 1e-3;  // m
       e.value[1] = written_at;
       e.sigma[1] = 0;
-      e.stiffness_factor = c * std::pow(written_at, best.exponent - 1);
-      e.stiffness_factor_sigma = best_sigma.back() * std::pow(written_at, best.exponent - 1);
+      if (c > 0) {
+        e.stiffness_factor = c * std::pow(written_at, best.exponent - 1);
+        e.stiffness_factor_sigma = best_sigma.back() * std::pow(written_at, best.exponent - 1);
+      }
     }
     out.effects.push_back(e);
   }

@@ -51,8 +51,16 @@ struct Truth {
   double gain = 1;         // the force sensor reads gain times the force
   double effort_noise = 0.02;  // N
   double angle_noise = 0;      // rad
+  double angle_count = 0;      // rad, an encoder's count the angle is read in (0: read as it is)
   const char* effort_format = "%.6f";
 };
+
+// The angle as read: `theta` with the sensor's noise (`draw` a standard
+// normal), then in whole counts where an encoder reads it.
+double read_angle(const Truth& h, double theta, double draw) {
+  const double angle = theta + h.angle_noise * draw;
+  return h.angle_count > 0 ? h.angle_count * std::round(angle / h.angle_count) : angle;
+}
 
 // The nutcracker's torque about the hinge at an angle, rate and
 // acceleration, with the hazelnut's force `actee` (N) on its arm `a` (m).
@@ -81,7 +89,7 @@ std::string trace(const Truth& h, unsigned seed, double seconds, double turned, 
     double tau = torque(h, m.theta, m.omega, m.alpha, turned);
     if (extra) tau += extra(t, m);
     const double effort = h.gain * tau / kB + h.effort_noise * unit(random);
-    const double angle = m.theta + h.angle_noise * unit(random);
+    const double angle = read_angle(h, m.theta, unit(random));
     char effort_text[64];
     std::snprintf(effort_text, sizeof effort_text, h.effort_format, effort);
     char row[160];
@@ -122,11 +130,25 @@ bool names(const Diagnosis& d, std::vector<EffectKind> set) {
   return got == set;
 }
 
-bool among_ambiguous(const Diagnosis& d, EffectKind k) {
-  for (const auto& set : d.ambiguous) {
-    if (set.size() == 1 && set[0] == k) return true;
-  }
-  return false;
+// Whether `set` is among the ambiguous sets, in any order.
+bool among_ambiguous(const Diagnosis& d, std::vector<EffectKind> set) {
+  std::sort(set.begin(), set.end());
+  return std::any_of(d.ambiguous.begin(), d.ambiguous.end(), [&](std::vector<EffectKind> listed) {
+    std::sort(listed.begin(), listed.end());
+    return listed == set;
+  });
+}
+
+bool among_ambiguous(const Diagnosis& d, EffectKind k) { return among_ambiguous(d, std::vector<EffectKind>{k}); }
+
+// A progressive spring the file lacks (N*m over its torque): `cubic`
+// N/m^3 on the nutcracker spring's whole compression, 10 mm from the
+// hinge, cubed.
+std::function<double(double, const Motion&)> progressive_spring(double cubic) {
+  return [=](double, const Motion& m) {
+    const double d = 0.010 * (30 * kDeg - m.theta) + 1.5 / 2000;  // m, the spring's compression
+    return cubic * d * d * d * 0.010;
+  };
 }
 
 TEST(GapDesigns, ASingleTraceThatCracksInTheFirstCycleNamesTheFriction) {
@@ -170,7 +192,7 @@ TEST(GapDesigns, ASingleTraceThatCracksInTheFirstCycleNamesTheFriction) {
     }
     const double tau = torque(truth, m.theta, m.omega, m.alpha, 0, force, a);
     char row[160];
-    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,%.4f\n", t, m.theta + truth.angle_noise * unit(random),
+    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,%.4f\n", t, read_angle(truth, m.theta, unit(random)),
                   tau / kB + 0.02 * unit(random), force + 0.1 * unit(random));
     csv += row;
   }
@@ -239,15 +261,8 @@ TEST(GapDesigns, APairWithALookAlikeListsPairsNotThreeEffects) {
       measurement("pair", {{"a.csv", trace(truth, 1, 10, 0, drive)}, {"b.csv", trace(truth, 2, 10, 0, drive)}})
           .string()));
   EXPECT_EQ(d.verdict, Verdict::ambiguous) << report_text(d);
-  auto listed = [&](std::vector<EffectKind> set) {
-    std::sort(set.begin(), set.end());
-    return std::any_of(d.ambiguous.begin(), d.ambiguous.end(), [&](std::vector<EffectKind> s) {
-      std::sort(s.begin(), s.end());
-      return s == set;
-    });
-  };
-  EXPECT_TRUE(listed({EffectKind::gravity, EffectKind::pivot_friction})) << report_text(d);
-  EXPECT_TRUE(listed({EffectKind::spring_preload, EffectKind::pivot_friction})) << report_text(d);
+  EXPECT_TRUE(among_ambiguous(d, {EffectKind::gravity, EffectKind::pivot_friction})) << report_text(d);
+  EXPECT_TRUE(among_ambiguous(d, {EffectKind::spring_preload, EffectKind::pivot_friction})) << report_text(d);
   for (const auto& set : d.ambiguous) EXPECT_LE(set.size(), 2u) << report_text(d);
   EXPECT_THAT(report_text(d), ::testing::HasSubstr("turn the tool")) << report_text(d);
 }
@@ -591,7 +606,7 @@ std::string squeeze_trace(const Truth& h, const Jaws& j, unsigned seed, double s
     double tau = torque(h, m.theta, m.omega, m.alpha, 0, 270e3 * d * j.h / (j.h - d), j.a);
     if (extra) tau += extra(t, m);
     char row[160];
-    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f\n", t, m.theta + h.angle_noise * unit(random),
+    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f\n", t, read_angle(h, m.theta, unit(random)),
                   tau / kB + h.effort_noise * unit(random));
     csv += row;
   }
@@ -635,7 +650,7 @@ CrackTrace crack_trace(const Truth& h, const Jaws& j, unsigned seed, const std::
     out.touching += !out.broken && d > 0 ? 1 : 0;
     const double tau = torque(h, m.theta, m.omega, m.alpha, 0, force, j.a);
     char row[160];
-    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,%.4f,%d\n", t, m.theta + h.angle_noise * unit(random),
+    std::snprintf(row, sizeof row, "%.3f,%.9f,%.6f,%.4f,%d\n", t, read_angle(h, m.theta, unit(random)),
                   tau / kB + h.effort_noise * unit(random), force + 0.1 * unit(random), out.broken ? 1 : 0);
     out.csv += row;
   }
@@ -852,10 +867,7 @@ TEST(GapDesigns, FrictionOrDampingAloneThenTheProgressiveSpringDecides) {
     return Motion{low + amp * (1 - dir * std::cos(w * v)), dir * amp * w * std::sin(w * v),
                   dir * amp * w * w * std::cos(w * v)};
   };
-  const auto progressive = [](double, const Motion& m) {
-    const double d = 0.010 * (30 * kDeg - m.theta) + 1.5 / 2000;  // m, the spring's compression
-    return 4e7 * d * d * d * 0.010;
-  };
+  const auto progressive = progressive_spring(4e7);
   const Diagnosis d = diagnose(load_measurement(
       measurement("branches", {{"a.csv", trace(truth, 1, 10, 0, strokes, progressive)},
                                {"b.csv", trace(truth, 2, 10, 0, strokes, progressive)}})
@@ -1132,40 +1144,24 @@ TEST(GapDesigns, AHeavyArmBesideADampingNearTheFloorIsNamed) {
   }
 }
 
-
-// A squeeze of the hazelnut read by an encoder: each 3.9 s the arm closes
-// from 4 deg over its touch in 0.5 s, squeezes it 0.5 deg in 0.4 s, lets
-// go in 1 s and opens again in 2 s (a half cosine each), with 0.08 N of
-// noise at the effort. The angle is the encoder's count of `count` rad,
-// printed to 1e-7 rad: still or slow, it stays on one count for many
-// samples, a staircase whose only noise is its rounding. `extra` (N*m) is
-// added to the effort's torque as in trace().
-std::string encoder_trace(const Truth& h, const Jaws& j, double count,
-                          const std::function<double(double, const Motion&)>& extra = nullptr) {
+// A squeeze of the hazelnut for an encoder to read: each 3.9 s the arm
+// closes from 4 deg over its touch in 0.5 s, squeezes it 0.5 deg in
+// 0.4 s, lets go in 1 s and opens again in 2 s (a half cosine each).
+// Still or slow, an encoder's angle stays on one count for many samples,
+// a staircase whose only noise is its rounding.
+std::function<Motion(double)> squeeze_and_open(const Jaws& j) {
   auto leg = [](double t, double span, double from, double to) {
     const double w = kPi / span, half = 0.5 * (to - from);
     return Motion{from + half * (1 - std::cos(w * t)), half * w * std::sin(w * t), half * w * w * std::cos(w * t)};
   };
   const double touch = j.theta_c, open = touch + 4 * kDeg, shut = touch - 0.5 * kDeg;
-  std::mt19937 random(1);
-  std::normal_distribution<double> unit(0.0, 1.0);
-  std::string csv = "t,angle,effort_force\n";
-  for (int i = 0; i < 7800; ++i) {
-    const double t = i * 1e-3;
+  return [=](double t) {
     double u = std::fmod(t, 3.9);
-    const Motion m = u < 0.5               ? leg(u, 0.5, open, touch)
-                     : (u -= 0.5) < 0.4 ? leg(u, 0.4, touch, shut)
-                     : (u -= 0.4) < 1.0 ? leg(u, 1.0, shut, touch)
-                                         : leg(u - 1.0, 2.0, touch, open);
-    const double d = std::max(0.0, j.a * (j.theta_c - m.theta));
-    double tau = torque(h, m.theta, m.omega, m.alpha, 0, 270e3 * d * j.h / (j.h - d), j.a);
-    if (extra) tau += extra(t, m);
-    char row[160];
-    std::snprintf(row, sizeof row, "%.3f,%.7f,%.6f\n", t, count * std::round(m.theta / count),
-                  tau / kB + 0.08 * unit(random));
-    csv += row;
-  }
-  return csv;
+    if (u < 0.5) return leg(u, 0.5, open, touch);
+    if ((u -= 0.5) < 0.4) return leg(u, 0.4, touch, shut);
+    if ((u -= 0.4) < 1.0) return leg(u, 1.0, shut, touch);
+    return leg(u - 1.0, 2.0, touch, open);
+  };
 }
 
 TEST(GapDesigns, AnEncodersCountIsTheAnglesNoiseNotMotionTheSamplesMiss) {
@@ -1174,8 +1170,11 @@ TEST(GapDesigns, AnEncodersCountIsTheAnglesNoiseNotMotionTheSamplesMiss) {
   // and nothing could be judged. Read as counts, the effect-free tool
   // matches its file.
   const Jaws j = hazelnut_jaws();
+  Truth truth;
+  truth.effort_noise = 0.08;
+  truth.angle_count = 2 * kPi / 4096;
   const Diagnosis d = diagnose(load_measurement(
-      squeeze_measurement("encoder", {encoder_trace(Truth{}, j, 2 * kPi / 4096)}).string()));
+      squeeze_measurement("encoder", {squeeze_trace(truth, j, 1, 7.8, squeeze_and_open(j))}).string()));
   EXPECT_EQ(d.verdict, Verdict::none) << report_text(d);
   size_t fitted = 0;
   for (const FoldSize& f : d.fold_sizes) fitted += f.fitted;
@@ -1188,12 +1187,11 @@ TEST(GapDesigns, FrictionAndAProgressiveSpringReadThroughAnEncoderAreNamed) {
   const Jaws j = hazelnut_jaws();
   Truth truth;
   truth.friction = 0.02;
-  const auto progressive = [](double, const Motion& m) {
-    const double d = 0.010 * (30 * kDeg - m.theta) + 1.5 / 2000;  // m, the spring's compression
-    return 4e7 * d * d * d * 0.010;
-  };
-  const Diagnosis d = diagnose(load_measurement(
-      squeeze_measurement("encoder-effects", {encoder_trace(truth, j, 2 * kPi / 34925, progressive)}).string()));
+  truth.effort_noise = 0.08;
+  truth.angle_count = 2 * kPi / 34925;
+  const Diagnosis d = diagnose(load_measurement(squeeze_measurement(
+      "encoder-effects", {squeeze_trace(truth, j, 1, 7.8, squeeze_and_open(j), progressive_spring(4e7))})
+                                                    .string()));
   EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
   EXPECT_TRUE(names(d, {EffectKind::pivot_friction, EffectKind::progressive_spring})) << report_text(d);
 }
