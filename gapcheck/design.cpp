@@ -496,14 +496,27 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
   }
   if (kind < 0.35) {
     const double size = uniform(rng, 2, 10);
-    int outside = integer(rng, 0, squeezing ? 4 : 3);
-    // A viscoelastic actee acts only in the contact: where the jaws press
-    // it for less than kLeastContact (ODE's tongs cracked a nut in 14 ms,
-    // 3045 and 3052) it is nothing a trace shows; another of the four.
-    if (outside == 4 && contact_seconds(c.drives, silent()) < kLeastContact) outside = integer(rng, 0, 3);
     const Drive& first = c.drives.front();
     const double top = first.high;
     const double bottom = c.tool.actee ? c.tool.actee->contact_angle : first.low;
+    // The effort the nominal spring needs half-way through the drive (N).
+    const double effort = (c.tool.preload_torque + c.tool.torsion * (c.tool.rest - 0.5 * (top + bottom))) / b;
+    // Each outside effect is promised at 2 to 10 times the floor, as the
+    // library's are. Two are bounded: a backlash to a fifth of the travel,
+    // a gain error to 20 % of the spring's effort; where even the bound
+    // leaves less than twice the floor (a soft spring, a weak one), the
+    // effect is under what a trace shows, and another is drawn. So is a viscoelastic actee where
+    // the jaws press it for less than kLeastContact (ODE's tongs cracked
+    // a nut in 14 ms, 3045 and 3052). A detent and a drifting offset are
+    // sized on the floor itself.
+    auto shows = [&](int which) {
+      if (which == 0) return c.tool.torsion * 0.1 * (top - bottom) >= 2 * floor;
+      if (which == 2) return 0.2 * std::abs(effort) >= 2 * noise;
+      if (which == 4) return contact_seconds(c.drives, silent()) >= kLeastContact;
+      return true;
+    };
+    int outside = integer(rng, 0, squeezing ? 4 : 3);
+    while (!shows(outside)) outside = integer(rng, 0, 3);
     switch (outside) {
       case 0:  // the spring turns once the arm has taken up the play
         c.outside.backlash = std::min(2 * size * floor / c.tool.torsion, 0.2 * (top - bottom));
@@ -513,12 +526,9 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
         c.outside.detent_angle = bottom + uniform(rng, 0.3, 0.7) * (top - bottom);
         c.outside.detent_width = uniform(rng, 0.08, 0.2) * (top - bottom);
         break;
-      case 2: {
-        // Against the effort the nominal spring needs half-way through the drive.
-        const double effort = (c.tool.preload_torque + c.tool.torsion * (c.tool.rest - 0.5 * (top + bottom))) / b;
+      case 2:
         c.outside.gain_error = (chance(rng, 0.5) ? 1 : -1) * std::min(0.2, size * noise / std::max(effort, 1e-6));
         break;
-      }
       case 3: c.outside.offset_drift = (chance(rng, 0.5) ? 1 : -1) * size * noise / first.seconds; break;
       default:
         c.outside.viscoelastic_share = uniform(rng, 0.15, 0.4);
