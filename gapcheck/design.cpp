@@ -505,10 +505,10 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
     // library's are. Two are bounded: a backlash to a fifth of the travel,
     // a gain error to 20 % of the spring's effort; where even the bound
     // leaves less than twice the floor (a soft spring, a weak one), the
-    // effect is under what a trace shows, and another is drawn. So is a viscoelastic actee where
-    // the jaws press it for less than kLeastContact (ODE's tongs cracked
-    // a nut in 14 ms, 3045 and 3052). A detent and a drifting offset are
-    // sized on the floor itself.
+    // effect is under what a trace shows, and another is drawn. So is a
+    // viscoelastic actee where the jaws press it for less than
+    // kLeastContact (ODE's tongs cracked a nut in 14 ms, 3045 and 3052).
+    // A detent and a drifting offset are sized on the floor itself.
     auto shows = [&](int which) {
       if (which == 0) return c.tool.torsion * 0.1 * (top - bottom) >= 2 * floor;
       if (which == 2) return 0.2 * std::abs(effort) >= 2 * noise;
