@@ -868,12 +868,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // smaller than the tolerance allows (the right damping and latency, 2 %
   // off, left 4.5 % of the variance shaped at 7 times the test's point,
   // development seed 3427, both engines). A shape a look-alike leaves is
-  // most often a larger share (a backlash read as friction, 14 %; a
-  // viscoelastic actee as an actee's law, 10 %); three effects can trim
-  // a far gap to a slight shape (a sensor reading 80 % high one way up,
-  // taken up by a weight, a preload and friction: 4.4 %), and so can any
-  // set where the nominal model was already within the tolerance, where
-  // the shape is the gap: there only a white residual explains it.
+  // most often a larger share (a backlash read as friction and an
+  // inertia, 14 %; a viscoelastic actee as an actee's law, 10 %). Three
+  // effects can trim a far gap to a slight shape (a sensor reading 80 %
+  // high one way up, taken up by a weight, a preload and friction:
+  // 4.4 %), and so can any set where the nominal model was already within
+  // the tolerance, where the shape is the gap: there only a white
+  // residual explains it.
   const bool slight_shape = !nominal_within && chosen.size() <= 2 && matched(current_scored) &&
                             d.residual.share < kSlightShape;
 
@@ -912,10 +913,18 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     unjudged("one block of " + predicted + ": no fit can be judged on samples it was not fitted to (two blocks of " +
                  std::to_string(kMinBlock) + " at least)",
              "measure longer, or more traces");
-  } else if (chosen.empty() || gain_alike || !(effects_match(current_scored) || d.residual.white || slight_shape)) {
+  } else if (chosen.empty() || gain_alike) {
     d.verdict = Verdict::unexplained;
-  } else {
+  } else if (effects_match(current_scored) || d.residual.white) {
     d.verdict = ambiguous ? Verdict::ambiguous : Verdict::explained;
+  } else if (slight_shape) {
+    d.verdict = ambiguous ? Verdict::ambiguous : Verdict::explained;
+    std::snprintf(line, sizeof line,
+                  "  the residual keeps a slight shape: %.1f %% of its variance (under %.0f %%), %.3g times the floor",
+                  100 * d.residual.share, 100 * kSlightShape, d.rmse_after / d.noise_through_model);
+    d.steps.push_back(line);
+  } else {
+    d.verdict = Verdict::unexplained;
   }
 
   // Unexplained over several traces: would each trace, fitted alone, be?
