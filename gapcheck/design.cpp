@@ -256,6 +256,10 @@ constexpr double kMaxLatency = 0.05;
 // s: the least time the jaws press an actee, in all, for its law to be
 // an effect of the case.
 constexpr double kLeastContact = 0.1;
+// The bounds of two effects outside the library: a backlash's play, a
+// share of the travel, and a force sensor's gain error.
+constexpr double kMostPlay = 0.2;
+constexpr double kMostGainError = 0.2;
 
 // The case's drives played effect-free, with silent sensors: each drive's
 // samples, in the drives' order.
@@ -510,8 +514,8 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
     // kLeastContact (ODE's tongs cracked a nut in 14 ms, 3045 and 3052).
     // A detent and a drifting offset are sized on the floor itself.
     auto shows = [&](int which) {
-      if (which == 0) return c.tool.torsion * 0.1 * (top - bottom) >= 2 * floor;
-      if (which == 2) return 0.2 * std::abs(effort) >= 2 * noise;
+      if (which == 0) return c.tool.torsion * 0.5 * kMostPlay * (top - bottom) >= 2 * floor;
+      if (which == 2) return kMostGainError * std::abs(effort) >= 2 * noise;
       if (which == 4) return contact_seconds(c.drives, silent()) >= kLeastContact;
       return true;
     };
@@ -519,7 +523,7 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
     while (!shows(outside)) outside = integer(rng, 0, 3);
     switch (outside) {
       case 0:  // the spring turns once the arm has taken up the play
-        c.outside.backlash = std::min(2 * size * floor / c.tool.torsion, 0.2 * (top - bottom));
+        c.outside.backlash = std::min(2 * size * floor / c.tool.torsion, kMostPlay * (top - bottom));
         break;
       case 1:
         c.outside.detent_torque = size * floor;
@@ -527,7 +531,7 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
         c.outside.detent_width = uniform(rng, 0.08, 0.2) * (top - bottom);
         break;
       case 2:
-        c.outside.gain_error = (chance(rng, 0.5) ? 1 : -1) * std::min(0.2, size * noise / std::max(effort, 1e-6));
+        c.outside.gain_error = (chance(rng, 0.5) ? 1 : -1) * std::min(kMostGainError, size * noise / std::max(effort, 1e-6));
         break;
       case 3: c.outside.offset_drift = (chance(rng, 0.5) ? 1 : -1) * size * noise / first.seconds; break;
       default:
