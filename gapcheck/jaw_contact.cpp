@@ -99,6 +99,7 @@ JawContact jaw_contact(const std::string& object_file, const std::string& actee_
   const int hinge = m->jnt_qposadr[joint];
   const int actee_geom = mj_name2id(m, mjOBJ_GEOM, "actee");
   const int arm = mj_name2id(m, mjOBJ_BODY, "moving_arm");
+  const int tool = mj_name2id(m, mjOBJ_BODY, "tool");
   auto touches = [&](double theta) {
     scene.restart();
     d->qpos[hinge] = theta;
@@ -134,10 +135,15 @@ JawContact jaw_contact(const std::string& object_file, const std::string& actee_
     const double* n = c.frame;
     const double moment[3] = {p[1] * n[2] - p[2] * n[1], p[2] * n[0] - p[0] * n[2], p[0] * n[1] - p[1] * n[0]};
     contact.lever = std::abs(moment[0] * axis[0] + moment[1] * axis[1] + moment[2] * axis[2]);
+    // The normal points from geom1 to geom2; into the actee from the jaw.
+    const double sign = c.geom2 == actee_geom ? 1.0 : -1.0;
+    const double offset[3] = {c.pos[0] - d->xpos[3 * tool], c.pos[1] - d->xpos[3 * tool + 1], c.pos[2] - d->xpos[3 * tool + 2]};
+    const double into[3] = {sign * n[0], sign * n[1], sign * n[2]};
+    mju_mulMatTVec(contact.touch, d->xmat + 9 * tool, offset, 3, 3);
+    mju_mulMatTVec(contact.into, d->xmat + 9 * tool, into, 3, 3);
   }
   if (!(contact.lever > 0)) throw std::runtime_error(session.name + ": MuJoCo's contact with the moving jaw was lost");
   // Across the jaws: the fixed jaw's normal is the tool body's y axis.
-  const int tool = mj_name2id(m, mjOBJ_BODY, "tool");
   const double normal[3] = {d->xmat[9 * tool + 1], d->xmat[9 * tool + 4], d->xmat[9 * tool + 7]};
   contact.thickness = extent(m, d, actee_geom, normal);
   return contact;

@@ -13,6 +13,10 @@ struct JawContact {
   double angle = 0;      // rad: the largest hinge angle at which the actee overlaps a geom of the moving arm
   double thickness = 0;  // m: the actee's extent across the jaws (along the fixed jaw's normal)
   double lever = 0;      // m: the moment arm about the hinge of the moving jaw's push, along MuJoCo's contact normal
+  // Where the moving jaw first touches the actee, in the tool's frame (m),
+  // and the unit direction from there into the actee.
+  double touch[3] = {0, 0, 0};
+  double into[3] = {0, 0, 0};
 };
 
 // For the actee placed `at_m` along the fixed arm. Throws
@@ -33,8 +37,9 @@ struct SceneGeom {
 // The jaws and the actee as afford's exported scene places them: the
 // moving arm's geoms in the arm's frame (the hinge is its z axis through
 // its origin, at angle 0 the arm lies along the fixed one), the actee's in
-// the tool's frame. The realities build their own scenes from these, so
-// that the jaws touch the actee where jaw_contact finds it.
+// the tool's frame. The MuJoCo reality builds its jaws from these, and its
+// plates press this actee (in the jaws it presses a point where
+// jaw_contact finds the jaw first touches it).
 struct JawScene {
   std::vector<SceneGeom> moving;
   SceneGeom actee;

@@ -193,6 +193,10 @@ Tool with_actee(Tool tool, const fs::path& source, const ActeePlace& place) {
   a.file = file.string();
   a.at = place.at;
   a.contact_angle = contact.angle;
+  for (int i = 0; i < 3; ++i) {
+    a.touch[i] = contact.touch[i];
+    a.into[i] = contact.into[i];
+  }
   a.thickness = contact.thickness;
   a.lever = contact.lever;
   a.stiffness = spec.stiffness;

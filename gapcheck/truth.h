@@ -37,6 +37,8 @@ struct ToolActee {
   double at = 0;             // m, its distance from the fulcrum along the arm
   double lever = 0;          // m, the moment arm of the moving jaw's push on it (MuJoCo's contact)
   double contact_angle = 0;  // rad
+  double touch[3] = {0, 0, 0};  // m, where the moving jaw first touches it, in the tool's frame
+  double into[3] = {0, 0, 0};   // the unit direction from there into it
   double thickness = 0;      // m, across the jaws
   double stiffness = 0;      // N/m, the file's linear law
   double limit = 0;          // N
