@@ -260,6 +260,9 @@ constexpr double kLeastContact = 0.1;
 // share of the travel, and a force sensor's gain error.
 constexpr double kMostPlay = 0.2;
 constexpr double kMostGainError = 0.2;
+// The most of a viscoelastic actee's force that relaxes (a standard linear
+// solid's share).
+constexpr double kMostRelaxing = 0.6;
 
 // The case's drives played effect-free, with silent sensors: each drive's
 // samples, in the drives' order.
@@ -321,34 +324,77 @@ double latency_for(double goal, double least, const std::vector<Drive>& drives, 
   return 0.5 * (lo + hi);
 }
 
-// The seconds of measured samples in which the jaws press the actee
-// before it cracks, not within kCrackReach of the crack, in the case's
-// `drives` played effect-free with silent sensors (`silent`). A specimen that
-// cracks in the first closing can be touched for a few ms only (a
-// tongs' fast stroke onto a stiff nut: 12 ms, 3080): its law then acts
-// on no sample an experimenter could read it from.
+// Which of a drive's samples, `played` effect-free with silent sensors,
+// are measured with the jaws pressing the actee before it cracks, not
+// within 50 ms of the crack (its approach, its snap in a 1 kHz trace).
+std::vector<bool> pressed(const Drive& drive, const std::vector<Measured>& played) {
+  constexpr double kCrackReach = 0.05;  // s
+  double broke = 1e300;                 // s
+  for (const Measured& m : played) {
+    if (m.broken) {
+      broke = m.t;
+      break;
+    }
+  }
+  std::vector<bool> out(played.size());
+  for (size_t k = 0; k < played.size(); ++k) {
+    const Measured& m = played[k];
+    out[k] = m.actee > 0 && m.t < broke - kCrackReach && drive.measured(m.t);
+  }
+  return out;
+}
+
+// The seconds of samples in which the jaws press the actee (`pressed`),
+// in the case's `drives` played effect-free with silent sensors
+// (`silent`). A specimen that cracks in the first closing can be touched
+// for a few ms only (a tongs' fast stroke onto a stiff nut: 12 ms, 3080):
+// its law then acts on no sample an experimenter could read it from.
 double contact_seconds(const std::vector<Drive>& drives, const SilentPlay& silent) {
-  constexpr double kCrackReach = 0.05;  // s: the approach to a crack, its snap in a 1 kHz trace
   double seconds = 0;
   for (size_t i = 0; i < drives.size(); ++i) {
-    const Drive& d = drives[i];
     const std::vector<Measured>& played = silent[i];
-    double broke = 1e300;  // s
-    for (const Measured& m : played) {
-      if (m.broken) {
-        broke = m.t;
-        break;
-      }
-    }
+    const std::vector<bool> in = pressed(drives[i], played);
     for (size_t k = 1; k < played.size(); ++k) {
-      const Measured& m = played[k];
-      if (m.actee > 0 && m.t < broke - kCrackReach && d.measured(m.t)) seconds += m.t - played[k - 1].t;
+      if (in[k]) seconds += played[k].t - played[k - 1].t;
     }
   }
   return seconds;
 }
 
+// The sensor damped near critically against the arm (kMinInertia of the
+// realities and the hidden inertia): a sensor that rang at a few hundred
+// hertz would leave a ringing that no effect of the library models.
+void damp_sensor(Case& c) { c.hand.sensor_damping = 1.4 * std::sqrt(c.hand.sensor_stiffness * (1e-6 + c.truth.inertia)); }
+
+// The case played with silent sensors, its library's effects reset.
+SilentPlay play_silent(Case quiet, const PlayDrive& play) {
+  quiet.truth = Truth{};
+  quiet.actee_impedance = ActeeImpedance{};
+  quiet.sensors = Sensors{.effort_noise = 0, .angle_noise = 0, .actee_noise = 0};
+  damp_sensor(quiet);
+  SilentPlay played;
+  for (const Drive& d : quiet.drives) played.push_back(play(quiet, d));
+  return played;
+}
+
 }  // namespace
+
+double viscoelastic_change(const Case& c, const PlayDrive& play) {
+  Case without = c;
+  without.outside = Outside{};
+  const SilentPlay silent = play_silent(without, play), relaxing = play_silent(c, play);
+  double sum = 0;
+  int n = 0;
+  for (size_t i = 0; i < c.drives.size(); ++i) {
+    const std::vector<bool> in = pressed(c.drives[i], silent[i]);
+    for (size_t k = 0; k < std::min(in.size(), relaxing[i].size()); ++k) {
+      if (!in[k]) continue;
+      sum += std::pow(relaxing[i][k].effort - silent[i][k].effort, 2);
+      ++n;
+    }
+  }
+  return n > 0 ? std::sqrt(sum / n) : 0.0;
+}
 
 Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed, const PlayDrive& play) {
   Rng rng(seed);
@@ -471,28 +517,17 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
   const double noise = c.sensors.effort_noise;  // N
   const double floor = noise * b;               // N*m
   const Motion motion = motion_of(c.drives);
-  // The sensor damped near critically against the arm (kMinInertia of the
-  // realities and the hidden inertia): a sensor that rang at a few hundred
-  // hertz would leave a ringing that no effect of the library models.
-  auto damp_sensor = [](Case& k) {
-    k.hand.sensor_damping = 1.4 * std::sqrt(k.hand.sensor_stiffness * (1e-6 + k.truth.inertia));
-  };
-  // The case played effect-free, with silent sensors: what a latency and
-  // an actee's law are sized or judged on. Played once, when first asked:
-  // what is drawn after (the truth, the actee's impedance) is reset in it.
+  // The case played effect-free: what a latency and an actee's law are
+  // sized or judged on. Played once, when first asked, before any effect
+  // outside the library is drawn.
   std::optional<SilentPlay> silent_play;
   auto silent = [&]() -> const SilentPlay& {
-    if (!silent_play) {
-      Case quiet = c;
-      quiet.truth = Truth{};
-      quiet.actee_impedance = ActeeImpedance{};
-      quiet.sensors = Sensors{.effort_noise = 0, .angle_noise = 0, .actee_noise = 0};
-      damp_sensor(quiet);
-      silent_play.emplace();
-      for (const Drive& d : quiet.drives) silent_play->push_back(play(quiet, d));
-    }
+    if (!silent_play) silent_play = play_silent(c, play);
     return *silent_play;
   };
+  // N: in the actee's contact the angle's noise passes into the effort
+  // through the specimen's stiffness: that is the floor there.
+  const double contact_floor = std::hypot(noise, c.sensors.angle_noise * actee_rotational / b);
   const double kind = uniform(rng, 0, 1);
   if (kind < 0.2) {
     damp_sensor(c);
@@ -511,12 +546,24 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
     // leaves less than twice the floor (a soft spring, a weak one), the
     // effect is under what a trace shows, and another is drawn. So is a
     // viscoelastic actee where the jaws press it for less than
-    // kLeastContact (ODE's tongs cracked a nut in 14 ms, 3045 and 3052).
-    // A detent and a drifting offset are sized on the floor itself.
+    // kLeastContact (ODE's tongs cracked a nut in 14 ms, 3045 and 3052),
+    // or where even kMostRelaxing of its force relaxing changes the effort
+    // in the contact by less than twice the floor there. A detent and a
+    // drifting offset are sized on the floor itself.
+    double relaxing_tau = 0;     // s, drawn when a viscoelastic actee is first asked for
+    double most_relaxing = 0;    // N, the RMS change with kMostRelaxing of its force relaxing
     auto shows = [&](int which) {
       if (which == 0) return c.tool.torsion * 0.5 * kMostPlay * (top - bottom) >= 2 * floor;
       if (which == 2) return kMostGainError * std::abs(effort) >= 2 * noise;
-      if (which == 4) return contact_seconds(c.drives, silent()) >= kLeastContact;
+      if (which == 4) {
+        if (contact_seconds(c.drives, silent()) < kLeastContact) return false;
+        relaxing_tau = uniform(rng, 0.1, 1.0);
+        Case relaxing = c;
+        relaxing.outside.viscoelastic_share = kMostRelaxing;
+        relaxing.outside.viscoelastic_tau = relaxing_tau;
+        most_relaxing = viscoelastic_change(relaxing, play);
+        return most_relaxing >= 2 * contact_floor;
+      }
       return true;
     };
     int outside = integer(rng, 0, squeezing ? 4 : 3);
@@ -535,8 +582,9 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
         break;
       case 3: c.outside.offset_drift = (chance(rng, 0.5) ? 1 : -1) * size * noise / first.seconds; break;
       default:
-        c.outside.viscoelastic_share = uniform(rng, 0.15, 0.4);
-        c.outside.viscoelastic_tau = uniform(rng, 0.1, 1.0);
+        // The change grows about in proportion to the share that relaxes.
+        c.outside.viscoelastic_share = kMostRelaxing * std::min(1.0, size * contact_floor / most_relaxing);
+        c.outside.viscoelastic_tau = relaxing_tau;
         break;
     }
     damp_sensor(c);
@@ -592,9 +640,6 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
       case Effect::latency: c.truth.latency = latency; break;
       case Effect::actee: {
         const ToolActee& a = *c.tool.actee;
-        // In the contact the angle's noise passes into the effort through
-        // the actee's stiffness: that is the floor there.
-        const double contact_floor = std::hypot(noise, c.sensors.angle_noise * actee_rotational / b);
         const double depth = c.scenario == ActeeScenario::light_squeeze ? 0.5 : 1.0;
         c.truth.actee_exponent = exponent_for(size * contact_floor, a.limit, depth, a.lever, b);
         c.actee_impedance =

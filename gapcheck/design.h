@@ -161,6 +161,13 @@ using PlayDrive = std::function<std::vector<Measured>(const Case&, const Drive&)
 Case draw_case(const std::filesystem::path& source, const std::filesystem::path& cases_dir, unsigned seed,
                const PlayDrive& play);
 
+// N: the RMS change the case's viscoelastic actee (c.outside) makes in the
+// effort where the jaws press the actee before it cracks, not within 50 ms
+// of the crack, the case played with silent sensors and no effect of the
+// library, with the viscoelastic actee and without. Each is promised at
+// twice the floor there at least.
+double viscoelastic_change(const Case& c, const PlayDrive& play);
+
 // The label the scorer reads: the true names joined by '+', sorted;
 // "none"; or "outside:NAME".
 std::string label_of(const Case& c);
