@@ -11,6 +11,15 @@
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// Each drive played by `reality` with its own noise seed, as the generator plays it.
+gapcheck::PlayDrive playing(const gapcheck::Reality& reality) {
+  return [&reality](const gapcheck::Case& k, const gapcheck::Drive& d) { return reality.play(k, d, d.noise_seed); };
+}
+
+}  // namespace
+
 // An actee in the jaws is pressed as the plates press it: its force at a
 // depth is the specimen's law there (MuJoCo's linear spring, k p, for the
 // effect-free specimen), the depth being the lever's, lever * (contact
@@ -24,9 +33,7 @@ TEST(GapcheckMujocoReality, AnActeeInTheJawsTakesTheDepthTheLeverGives) {
   const fs::path cases = fs::path(testing::TempDir()) / "gapcheck-mujoco-reality";
   fs::create_directories(cases);
   const std::unique_ptr<gapcheck::Reality> reality = gapcheck::make_mujoco_reality();
-  const gapcheck::Case drawn = gapcheck::draw_case(
-      AFFORD_SOURCE_DIR, cases, 3094,
-      [&reality](const gapcheck::Case& k, const gapcheck::Drive& d) { return reality->play(k, d, d.noise_seed); });
+  const gapcheck::Case drawn = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, 3094, playing(*reality));
   ASSERT_TRUE(drawn.tool.actee.has_value());
   ASSERT_NE(drawn.tool.actee->file.find("pecan"), std::string::npos);
   gapcheck::Case silent = drawn;
@@ -60,9 +67,7 @@ TEST(GapcheckMujocoReality, AViscoelasticActeeIsDrawnOnlyWhereItShowsAtTwiceTheF
   const fs::path cases = fs::path(testing::TempDir()) / "gapcheck-mujoco-viscoelastic";
   fs::create_directories(cases);
   const std::unique_ptr<gapcheck::Reality> reality = gapcheck::make_mujoco_reality();
-  const gapcheck::PlayDrive play = [&reality](const gapcheck::Case& k, const gapcheck::Drive& d) {
-    return reality->play(k, d, d.noise_seed);
-  };
+  const gapcheck::PlayDrive play = playing(*reality);
   int relaxing = 0;
   for (unsigned seed : {3197u, 3238u}) {
     const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, seed, play);
