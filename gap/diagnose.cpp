@@ -895,7 +895,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
              "measure longer, or slower, or more traces");
   } else if (nominal_matched) {
     d.verdict = Verdict::none;
-  } else if (chosen.empty() && nominal_within && (white_under(nominal) || d.residual.share < kSlightShape)) {
+  } else if (chosen.empty() && nominal_within &&
+             (d.residual.q <= kStructured * d.residual.threshold || d.residual.share < kSlightShape)) {
     // The nominal model's residual was within the tolerance but over the
     // whiteness test's point, so the library was searched, and nothing in
     // it took the structure up. Judged as any set's residual is judged at
@@ -905,9 +906,10 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // Q 1.45 times the point, development seeds 3219 and 3225; an
     // effect-free press at 1.0 times the floor, its actee's law misfitting
     // the contact by a shape of 1.7 % of the variance at 2.005 times the
-    // point, 3316, both engines).
+    // point, 3316, both engines). With nothing chosen, d.residual is the
+    // nominal's, judged as white_under judges a set's.
     d.verdict = Verdict::none;
-    if (d.residual.q <= kStructured * d.residual.threshold) {  // the residual is the nominal's
+    if (d.residual.q <= kStructured * d.residual.threshold) {
       d.steps.push_back("  nothing cuts it, and the nominal's residual is within the noise's tolerance with no clear "
                         "shape (under twice the whiteness test's point): no gap shown");
     } else {

@@ -377,12 +377,10 @@ SilentPlay play_silent(Case quiet, const PlayDrive& play) {
   return played;
 }
 
-}  // namespace
-
-double viscoelastic_change(const Case& c, const PlayDrive& play) {
-  Case without = c;
-  without.outside = Outside{};
-  const SilentPlay silent = play_silent(without, play), relaxing = play_silent(c, play);
+// N: viscoelastic_change, the case without its viscoelastic actee already
+// played (`silent`).
+double relaxing_change(const Case& c, const SilentPlay& silent, const PlayDrive& play) {
+  const SilentPlay relaxing = play_silent(c, play);
   double sum = 0;
   int n = 0;
   for (size_t i = 0; i < c.drives.size(); ++i) {
@@ -394,6 +392,14 @@ double viscoelastic_change(const Case& c, const PlayDrive& play) {
     }
   }
   return n > 0 ? std::sqrt(sum / n) : 0.0;
+}
+
+}  // namespace
+
+double viscoelastic_change(const Case& c, const PlayDrive& play) {
+  Case without = c;
+  without.outside = Outside{};
+  return relaxing_change(c, play_silent(without, play), play);
 }
 
 Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed, const PlayDrive& play) {
@@ -561,7 +567,7 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
         Case relaxing = c;
         relaxing.outside.viscoelastic_share = kMostRelaxing;
         relaxing.outside.viscoelastic_tau = relaxing_tau;
-        most_relaxing = viscoelastic_change(relaxing, play);
+        most_relaxing = relaxing_change(relaxing, silent(), play);
         return most_relaxing >= 2 * contact_floor;
       }
       return true;
