@@ -21,6 +21,7 @@ namespace {
 // The heaviest arm a hand tool has, kg*m^2 (270 g at 90 mm): slower drives
 // would need a flywheel for an inertia the sensors can see.
 constexpr double kMaxArmInertia = 2e-3;
+constexpr double kMaxWeightTorque = 0.24;  // N*m: that arm's weight, level
 constexpr double kClosingStroke = 0.85;  // of a closing-only stroke's period, the closing
 using Rng = std::mt19937;
 
@@ -268,37 +269,74 @@ constexpr double kMostRelaxing = 0.6;
 // samples, in the drives' order.
 using SilentPlay = std::vector<std::vector<Measured>>;
 
+// Which of a drive's samples, `played` effect-free with silent sensors,
+// are measured out of the actee's contact, not within the longest latency
+// after it (a late reading would reach back into it), and not in the
+// 0.2 s after a crack: there the effort's rate comes with the stiff
+// contact's ringing and the snap, which 1 kHz samples do not resolve and a
+// diagnosis leaves out (on development seeds 3000-3099, a latency sized
+// over every sample fell 5 times of 13 to the 2 ms bound on a squeeze's
+// rate, and 2 of those 5 went unnamed in both engines; sized out of the
+// contact only, a tongs' light squeeze, 3032, still had its latency sized
+// on the release's step and read `none`).
+std::vector<bool> free_of_contact(const Drive& drive, const std::vector<Measured>& played) {
+  constexpr double kSnap = 0.2;  // s
+  double broke = -1, touched = -1;  // s
+  std::vector<bool> out;
+  for (const Measured& m : played) {
+    if (m.broken && broke < 0) broke = m.t;
+    if (m.actee != 0) touched = m.t;
+    const bool near_contact = touched >= 0 && m.t <= touched + kMaxLatency;
+    const bool near_break = broke >= 0 && m.t < broke + kSnap;
+    out.push_back(drive.measured(m.t) && !near_contact && !near_break);
+  }
+  return out;
+}
+
+// N: the RMS change in the effort between two plays of the case's
+// `drives` with silent sensors, over the samples free of the actee's
+// contact in the first (`silent`, effect-free). The change is averaged
+// over 25 ms either side first, the half-width over which the diagnosis
+// differentiates the angle: an arm's inertia pushes hardest in the few
+// ms in which the hand's servo turns the arm about, spikes the diagnosis
+// leaves out as motion a 1 kHz trace does not resolve (as motion_of sizes
+// on the target's acceleration over 25 ms). Sized on the spikes, two arm
+// inertias of development seeds 3000-3099 in ODE (3005, 3029) read
+// `none` with ceilings of 0.04 and 0.05.
+double free_change(const std::vector<Drive>& drives, const SilentPlay& silent, const SilentPlay& played) {
+  constexpr long kHalfWidth = 25;  // samples, at 1 kHz
+  double sum = 0;
+  int n = 0;
+  for (size_t i = 0; i < drives.size(); ++i) {
+    const std::vector<bool> free = free_of_contact(drives[i], silent[i]);
+    const size_t count = std::min(free.size(), played[i].size());
+    std::vector<double> running(count + 1, 0.0);  // N*samples: the change summed up to each sample
+    for (size_t k = 0; k < count; ++k) running[k + 1] = running[k] + played[i][k].effort - silent[i][k].effort;
+    for (size_t k = 0; k < count; ++k) {
+      if (!free[k]) continue;
+      const size_t from = static_cast<size_t>(std::max(0L, static_cast<long>(k) - kHalfWidth));
+      const size_t to = std::min(count, k + kHalfWidth + 1);
+      sum += std::pow((running[to] - running[from]) / static_cast<double>(to - from), 2);
+      ++n;
+    }
+  }
+  return n > 0 ? std::sqrt(sum / n) : 0.0;
+}
+
 // The latency (s, 2 ms to kMaxLatency) by which the effort `silent` reads
 // (the case's `drives` played effect-free, with silent sensors) changes by `goal` N,
-// RMS over the measured samples out of contact; 0 where even the longest
-// changes it by less than `least` N. The delay is the readout's
-// (sensor_readout.cpp): F(t - latency) against F(t), linear between
-// samples. Sized before on the drives' target (the spring's rate times
-// the target's), all but 2 of 20 latencies on development seeds
-// 3000-3099 were held at the longest, of a size nobody knew.
+// RMS over the samples free of the actee's contact (free_of_contact); 0
+// where even the longest changes it by less than `least` N. The delay is
+// the readout's (sensor_readout.cpp): F(t - latency) against F(t), linear
+// between samples. Sized before on the drives' target (the spring's rate times the
+// target's), all but 2 of 20 latencies on development seeds 3000-3099
+// were held at the longest, of a size nobody knew.
 double latency_for(double goal, double least, const std::vector<Drive>& drives, const SilentPlay& silent) {
   std::vector<std::vector<double>> effort(drives.size());
   std::vector<std::vector<bool>> measured(drives.size());
-  // Only out of the actee's contact, not within the longest latency after
-  // it (a late reading would reach back into it), and not in the 0.2 s
-  // after a crack: there the effort's rate comes with the stiff contact's
-  // ringing and the snap, which 1 kHz samples do not resolve and a
-  // diagnosis leaves out (on development seeds 3000-3099, sized over every
-  // sample, 5 of 13 latencies fell to the 2 ms bound on a squeeze's rate,
-  // and 2 of those 5 went unnamed in both engines; sized out of the
-  // contact only, a tongs' light squeeze, 3032, still had its latency
-  // sized on the release's step and read `none`).
-  constexpr double kSnap = 0.2;  // s
   for (size_t i = 0; i < drives.size(); ++i) {
-    double broke = -1, touched = -1;  // s
-    for (const Measured& m : silent[i]) {
-      if (m.broken && broke < 0) broke = m.t;
-      if (m.actee != 0) touched = m.t;
-      effort[i].push_back(m.effort);
-      const bool near_contact = touched >= 0 && m.t <= touched + kMaxLatency;
-      const bool near_break = broke >= 0 && m.t < broke + kSnap;
-      measured[i].push_back(drives[i].measured(m.t) && !near_contact && !near_break);
-    }
+    for (const Measured& m : silent[i]) effort[i].push_back(m.effort);
+    measured[i] = free_of_contact(drives[i], silent[i]);
   }
   auto change = [&](double latency) {
     const double shift = latency * 1000;  // samples
@@ -366,15 +404,20 @@ double contact_seconds(const std::vector<Drive>& drives, const SilentPlay& silen
 // hertz would leave a ringing that no effect of the library models.
 void damp_sensor(Case& c) { c.hand.sensor_damping = 1.4 * std::sqrt(c.hand.sensor_stiffness * (1e-6 + c.truth.inertia)); }
 
-// The case played with silent sensors, its library's effects reset.
-SilentPlay play_silent(Case quiet, const PlayDrive& play) {
-  quiet.truth = Truth{};
-  quiet.actee_impedance = ActeeImpedance{};
+// The case played with silent sensors.
+SilentPlay play_quiet(Case quiet, const PlayDrive& play) {
   quiet.sensors = Sensors{.effort_noise = 0, .angle_noise = 0, .actee_noise = 0};
   damp_sensor(quiet);
   SilentPlay played;
   for (const Drive& d : quiet.drives) played.push_back(play(quiet, d));
   return played;
+}
+
+// The case played with silent sensors, its library's effects reset.
+SilentPlay play_silent(Case quiet, const PlayDrive& play) {
+  quiet.truth = Truth{};
+  quiet.actee_impedance = ActeeImpedance{};
+  return play_quiet(quiet, play);
 }
 
 // N: viscoelastic_change, the case without its viscoelastic actee already
@@ -395,6 +438,10 @@ double relaxing_change(const Case& c, const SilentPlay& silent, const PlayDrive&
 }
 
 }  // namespace
+
+double library_change(const Case& c, const PlayDrive& play) {
+  return free_change(c.drives, play_silent(c, play), play_quiet(c, play));
+}
 
 double viscoelastic_change(const Case& c, const PlayDrive& play) {
   Case without = c;
@@ -523,9 +570,9 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
   const double noise = c.sensors.effort_noise;  // N
   const double floor = noise * b;               // N*m
   const Motion motion = motion_of(c.drives);
-  // The case played effect-free: what a latency and an actee's law are
-  // sized or judged on. Played once, when first asked, before any effect
-  // outside the library is drawn.
+  // The case played effect-free: what the library's effects and a
+  // viscoelastic actee are sized or judged on. Played once, when first
+  // asked, before any effect outside the library is drawn.
   std::optional<SilentPlay> silent_play;
   auto silent = [&]() -> const SilentPlay& {
     if (!silent_play) silent_play = play_silent(c, play);
@@ -601,58 +648,91 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
   if (squeezing) library.push_back(Effect::actee);
   std::shuffle(library.begin(), library.end(), rng);
   const int count = kind < 0.675 ? 1 : 2;
+  // N: the RMS change a truth of the tool's effects makes in the effort,
+  // over the samples free of the actee's contact, played with silent
+  // sensors against the effect-free play.
+  auto change_of = [&](const Truth& truth) {
+    Case with = c;
+    with.truth = truth;
+    return free_change(c.drives, silent(), play_quiet(with, play));
+  };
   int drawn = 0;
   for (size_t i = 0; i < library.size() && drawn < count; ++i) {
     const double size = uniform(rng, 2, 10);
-    const double torque = size * floor;  // N*m
-    // An arm's inertia is bounded (kMaxArmInertia): where even the
-    // heaviest arm gives less than twice the floor at these drives'
-    // acceleration, the effect would be smaller than every case promises
-    // (on development seeds 3000-3099, 13 of 16 inertias were bounded to
-    // 0.03-1.5 floors); the case takes the library's next effect instead.
-    if (library[i] == Effect::inertia && kMaxArmInertia * motion.acceleration < 2 * floor) continue;
-    // A latency likewise, where even the longest changes the effort by
-    // less than twice the floor.
-    double latency = 0;  // s
+    Truth truth = c.truth;
+    if (library[i] == Effect::actee) {
+      // An actee's law acts in the contact only, where the jaws press the
+      // actee for kLeastContact at least before it cracks; sized there by
+      // its misfit against the plates' law, on the contact's floor.
+      if (contact_seconds(c.drives, silent()) < kLeastContact) continue;
+      const ToolActee& a = *c.tool.actee;
+      const double depth = c.scenario == ActeeScenario::light_squeeze ? 0.5 : 1.0;
+      c.truth.actee_exponent = exponent_for(size * contact_floor, a.limit, depth, a.lever, b);
+      c.actee_impedance = impedance_for(size * contact_floor, a.limit, a.stiffness * c.actee_specimen, depth, a.lever, b);
+      ++drawn;
+      continue;
+    }
     if (library[i] == Effect::latency) {
-      latency = latency_for(size * noise, 2 * noise, c.drives, silent());
-      if (latency == 0) continue;
+      // Where even the longest changes the effort by less than twice the
+      // floor, the case takes the library's next effect instead.
+      truth.latency = latency_for(size * noise, 2 * noise, c.drives, silent());
+      if (truth.latency == 0) continue;
+    } else {
+      // Every other effect of the tool is sized, as a latency is, on the
+      // change it makes in the effort as played: `size` times the floor,
+      // RMS. Drawn as a torque at the emphasis (`size` floors, as an
+      // amplitude), an effect showed less where the motion hid it (a
+      // weight about a pivot turned upright, a cubic spring away from the
+      // deepest closing): development seeds 3072 and 3366 changed the
+      // effort by 0.92 and 0.78 times the noise. Played once at that
+      // torque, then scaled: each is linear in its parameter. The two bounded (the heaviest arm's inertia and
+      // weight, a preload less than the file's by at most 0.8 of it) take
+      // the library's next effect where the bound leaves less than twice
+      // the floor.
+      const double torque = size * floor;  // N*m
+      const bool less = library[i] == Effect::preload && chance(rng, 0.5);
+      double* parameter = nullptr;
+      double most = 1e300;
+      switch (library[i]) {
+        case Effect::friction: parameter = &truth.friction; *parameter = torque; break;
+        case Effect::damping: parameter = &truth.damping; *parameter = torque / motion.rate; break;
+        case Effect::preload:
+          parameter = &truth.preload;
+          *parameter = less ? -torque : torque;
+          if (less) most = 0.8 * c.tool.preload_torque;
+          break;
+        case Effect::cubic: {
+          // At the deepest the drives close the spring (its compression, m).
+          const double deepest = c.tool.spring_position * (c.tool.rest - motion.lowest) +
+                                 c.tool.preload_torque / c.tool.torsion * c.tool.spring_position;
+          parameter = &truth.cubic;
+          *parameter = torque / (c.tool.spring_position * std::pow(deepest, 3));
+          break;
+        }
+        case Effect::inertia:
+          parameter = &truth.inertia;
+          *parameter = torque / motion.acceleration;
+          most = kMaxArmInertia;
+          break;
+        case Effect::weight:
+          parameter = &truth.weight;
+          *parameter = torque;
+          most = kMaxWeightTorque;
+          break;
+        default: break;
+      }
+      const double played = change_of(truth);  // N
+      if (!(played > 0)) continue;
+      const double scale = std::min(size * noise / played, most / std::abs(*parameter));
+      if (scale * played < 2 * noise) continue;
+      *parameter *= scale;
     }
-    // An actee's law likewise, where the jaws press the actee for less
-    // than kLeastContact in all before it cracks.
-    if (library[i] == Effect::actee && contact_seconds(c.drives, silent()) < kLeastContact) continue;
+    // Two effects of the tool may cancel where the motion cannot tell
+    // them apart (a friction and less preload on closing-only strokes);
+    // the two at once must show at twice the floor too.
+    if (drawn == 1 && c.truth.actee_exponent == 0 && change_of(truth) < 2 * noise) continue;
+    c.truth = truth;
     ++drawn;
-    switch (library[i]) {
-      case Effect::friction: c.truth.friction = torque; break;
-      case Effect::damping: c.truth.damping = torque / motion.rate; break;
-      case Effect::preload: {
-        // Less of it at most by 0.8 of the file's, and only where that is
-        // at least twice the floor (as with the inertia: on development
-        // seeds 3000-3099, 2 of 15 preloads were cut to about one floor).
-        const double most_less = 0.8 * c.tool.preload_torque;
-        const bool less = !chance(rng, 0.5) && most_less >= 2 * floor;
-        c.truth.preload = less ? -std::min(torque, most_less) : torque;
-        break;
-      }
-      case Effect::cubic: {
-        // At the deepest the drives close the spring (its compression, m).
-        const double deepest = c.tool.spring_position * (c.tool.rest - motion.lowest) +
-                               c.tool.preload_torque / c.tool.torsion * c.tool.spring_position;
-        c.truth.cubic = torque / (c.tool.spring_position * std::pow(deepest, 3));
-        break;
-      }
-      case Effect::inertia: c.truth.inertia = std::min(torque / motion.acceleration, kMaxArmInertia); break;
-      case Effect::weight: c.truth.weight = torque; break;
-      case Effect::latency: c.truth.latency = latency; break;
-      case Effect::actee: {
-        const ToolActee& a = *c.tool.actee;
-        const double depth = c.scenario == ActeeScenario::light_squeeze ? 0.5 : 1.0;
-        c.truth.actee_exponent = exponent_for(size * contact_floor, a.limit, depth, a.lever, b);
-        c.actee_impedance =
-            impedance_for(size * contact_floor, a.limit, a.stiffness * c.actee_specimen, depth, a.lever, b);
-        break;
-      }
-    }
   }
   damp_sensor(c);
   return c;

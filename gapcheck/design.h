@@ -161,6 +161,13 @@ using PlayDrive = std::function<std::vector<Measured>(const Case&, const Drive&)
 Case draw_case(const std::filesystem::path& source, const std::filesystem::path& cases_dir, unsigned seed,
                const PlayDrive& play);
 
+// N: the RMS change the case's effects of the library (c.truth) make in
+// the effort over the samples free of the actee's contact, the case
+// played with silent sensors, with them and without. Each effect, and a
+// pair together, is drawn at 2 to 10 times the effort's noise there, at
+// least twice it where a bound holds it back.
+double library_change(const Case& c, const PlayDrive& play);
+
 // N: the RMS change the case's viscoelastic actee (c.outside) makes in the
 // effort where the jaws press the actee before it cracks, not within 50 ms
 // of the crack, the case played with silent sensors and no effect of the

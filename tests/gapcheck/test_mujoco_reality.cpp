@@ -81,3 +81,21 @@ TEST(GapcheckMujocoReality, AViscoelasticActeeIsDrawnOnlyWhereItShowsAtTwiceTheF
   }
   EXPECT_GE(relaxing, 1);
 }
+
+// Every effect of the library is drawn at 2 to 10 times the effort's
+// noise as it shows in the effort played, not as a torque at the
+// emphasis. Drawn as a torque before, a snips' progressive spring on
+// closing-only strokes (development seed 3072) changed the effort by
+// 0.92 times the noise, and a tongs' weight with a progressive spring
+// (3366) by 0.78 times (now 2.4 and 2.2 times).
+TEST(GapcheckMujocoReality, AnEffectOfTheLibraryShowsInTheEffortAtTwiceTheNoise) {
+  const fs::path cases = fs::path(testing::TempDir()) / "gapcheck-mujoco-library";
+  fs::create_directories(cases);
+  const std::unique_ptr<gapcheck::Reality> reality = gapcheck::make_mujoco_reality();
+  const gapcheck::PlayDrive play = playing(*reality);
+  for (unsigned seed : {3072u, 3366u}) {
+    const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, seed, play);
+    ASSERT_FALSE(c.truth.names().empty()) << "seed " << seed;
+    EXPECT_GE(gapcheck::library_change(c, play), 2 * c.sensors.effort_noise) << "seed " << seed;
+  }
+}
