@@ -679,53 +679,54 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
       if (truth.latency == 0) continue;
     } else {
       // Every other effect of the tool is sized, as a latency is, on the
-      // change it makes in the effort as played: `size` times the floor,
-      // RMS. Drawn as a torque at the emphasis (`size` floors, as an
-      // amplitude), an effect showed less where the motion hid it (a
+      // change it makes in the effort as played alone: `size` times the
+      // floor, RMS. Drawn as a torque at the emphasis (`size` floors, as
+      // an amplitude), an effect showed less where the motion hid it (a
       // weight about a pivot turned upright, a cubic spring away from the
       // deepest closing): development seeds 3072 and 3366 changed the
       // effort by 0.92 and 0.78 times the noise. Played once at that
-      // torque, then scaled: each is linear in its parameter. The two bounded (the heaviest arm's inertia and
-      // weight, a preload less than the file's by at most 0.8 of it) take
-      // the library's next effect where the bound leaves less than twice
-      // the floor.
+      // torque, then scaled: each is linear in its parameter. The bounded
+      // (the heaviest arm's inertia and weight, a preload less than the
+      // file's by at most 0.8 of it) take the library's next effect where
+      // the bound leaves less than twice the floor.
       const double torque = size * floor;  // N*m
       const bool less = library[i] == Effect::preload && chance(rng, 0.5);
-      double* parameter = nullptr;
+      Truth alone;
+      double Truth::*field = nullptr;
       double most = 1e300;
       switch (library[i]) {
-        case Effect::friction: parameter = &truth.friction; *parameter = torque; break;
-        case Effect::damping: parameter = &truth.damping; *parameter = torque / motion.rate; break;
+        case Effect::friction: field = &Truth::friction; alone.friction = torque; break;
+        case Effect::damping: field = &Truth::damping; alone.damping = torque / motion.rate; break;
         case Effect::preload:
-          parameter = &truth.preload;
-          *parameter = less ? -torque : torque;
+          field = &Truth::preload;
+          alone.preload = less ? -torque : torque;
           if (less) most = 0.8 * c.tool.preload_torque;
           break;
         case Effect::cubic: {
           // At the deepest the drives close the spring (its compression, m).
           const double deepest = c.tool.spring_position * (c.tool.rest - motion.lowest) +
                                  c.tool.preload_torque / c.tool.torsion * c.tool.spring_position;
-          parameter = &truth.cubic;
-          *parameter = torque / (c.tool.spring_position * std::pow(deepest, 3));
+          field = &Truth::cubic;
+          alone.cubic = torque / (c.tool.spring_position * std::pow(deepest, 3));
           break;
         }
         case Effect::inertia:
-          parameter = &truth.inertia;
-          *parameter = torque / motion.acceleration;
+          field = &Truth::inertia;
+          alone.inertia = torque / motion.acceleration;
           most = kMaxArmInertia;
           break;
         case Effect::weight:
-          parameter = &truth.weight;
-          *parameter = torque;
+          field = &Truth::weight;
+          alone.weight = torque;
           most = kMaxWeightTorque;
           break;
-        default: break;
+        default: continue;
       }
-      const double played = change_of(truth);  // N
+      const double played = change_of(alone);  // N
       if (!(played > 0)) continue;
-      const double scale = std::min(size * noise / played, most / std::abs(*parameter));
+      const double scale = std::min(size * noise / played, most / std::abs(alone.*field));
       if (scale * played < 2 * noise) continue;
-      *parameter *= scale;
+      truth.*field = scale * alone.*field;
     }
     // Two effects of the tool may cancel where the motion cannot tell
     // them apart (a friction and less preload on closing-only strokes);
