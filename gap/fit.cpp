@@ -380,6 +380,35 @@ Fitter::Sums Fitter::power_law_row(size_t i, const std::vector<EffectKind>& line
   return out;
 }
 
+namespace {
+
+// Column c's sum of squares less its part in the other columns' span
+// (the Schur complement of the others in the normal equations' matrix).
+double own_part(const Eigen::MatrixXd& xtx, Eigen::Index c) {
+  const Eigen::Index k = xtx.rows();
+  if (k == 1) return xtx(c, c);
+  std::vector<Eigen::Index> others;
+  for (Eigen::Index o = 0; o < k; ++o) {
+    if (o != c) others.push_back(o);
+  }
+  const auto m = static_cast<Eigen::Index>(others.size());
+  Eigen::MatrixXd oo(m, m);
+  Eigen::VectorXd oc(m);
+  // Scaled to unit diagonal, as the solve is.
+  auto unit = [&](Eigen::Index a, Eigen::Index b) {
+    const double norms = std::sqrt(xtx(a, a) * xtx(b, b));
+    return norms > 0 ? xtx(a, b) / norms : 0.0;
+  };
+  for (Eigen::Index a = 0; a < m; ++a) {
+    oc[a] = unit(others[static_cast<size_t>(a)], c);
+    for (Eigen::Index b = 0; b < m; ++b) oo(a, b) = unit(others[static_cast<size_t>(a)], others[static_cast<size_t>(b)]);
+  }
+  const double spanned = oc.dot(oo.ldlt().solve(oc));
+  return std::max(0.0, 1 - spanned) * xtx(c, c);
+}
+
+}  // namespace
+
 double Fitter::solve(const Sums& sums, std::vector<double>* coef, std::vector<double>* sigma, size_t* n,
                      double* wsum) const {
   const auto k = static_cast<size_t>(sums.xty.size());
@@ -400,8 +429,15 @@ double Fitter::solve(const Sums& sums, std::vector<double>* coef, std::vector<do
   // different sizes (a cubic spring, a friction sign) stay well conditioned.
   Eigen::MatrixXd compensated = xtx;
   for (Eigen::Index c = 0; c < compensated.rows(); ++c) {
-    // Never more than half: a column that is mostly noise stays as it is.
-    compensated(c, c) -= std::min(inflation[c], 0.5 * compensated(c, c));
+    if (!(inflation[c] > 0)) continue;
+    // Never more than half of the column's own part, the part the other
+    // columns do not span: a column that is mostly noise stays as it is,
+    // and so does one all but parallel to another, whose own part the
+    // noise may exceed. Taken off the whole column, the compensation left
+    // the normal equations indefinite: a damping beside a friction on
+    // strokes of all but one speed was fitted as -1.5 N*m of friction and
+    // 18.8 N*m*s/rad of damping (development seed 5082, a tongs in ODE).
+    compensated(c, c) -= std::min(inflation[c], 0.5 * own_part(xtx, c));
   }
   Eigen::VectorXd scale = compensated.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
   const Eigen::MatrixXd a = scale.asDiagonal() * compensated * scale.asDiagonal();

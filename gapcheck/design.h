@@ -168,6 +168,14 @@ Case draw_case(const std::filesystem::path& source, const std::filesystem::path&
 // least twice it where a bound holds it back.
 double library_change(const Case& c, const PlayDrive& play);
 
+// N: the RMS change the case's actee law (truth.actee_exponent, and
+// actee_impedance in MuJoCo) makes in the effort where the jaws press the
+// actee before it cracks, not within 50 ms of the crack, the case played
+// with silent sensors and nothing else beyond its file, with the law and
+// without. Promised at twice the floor there at least (the effort's noise
+// and the angle's through the specimen's stiffness).
+double actee_law_change(const Case& c, const PlayDrive& play);
+
 // N: the RMS change the case's viscoelastic actee (c.outside) makes in the
 // effort where the jaws press the actee before it cracks, not within 50 ms
 // of the crack, the case played with silent sensors and no effect of the
