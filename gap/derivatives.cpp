@@ -25,12 +25,15 @@ Eigen::MatrixXd even_design(size_t m, int degree) {
 
 }  // namespace
 
-std::vector<double> acceleration_weights(size_t half_width, int degree, double dt) {
+std::vector<double> derivative_weights(size_t half_width, int degree, int order, double dt) {
   const Eigen::MatrixXd a = even_design(half_width, degree);
   const Eigen::MatrixXd even = (a.transpose() * a).inverse() * a.transpose();
   const double h = static_cast<double>(half_width) * dt;
+  // The polynomial in u = t / h: its order-th derivative at the middle is
+  // order! times the coefficient of u^order, over h^order.
+  const double scale = order == 1 ? 1 / h : 2 / (h * h);
   std::vector<double> w(static_cast<size_t>(a.rows()));
-  for (size_t j = 0; j < w.size(); ++j) w[j] = 2 * even(2, static_cast<long>(j)) / (h * h);
+  for (size_t j = 0; j < w.size(); ++j) w[j] = scale * even(order, static_cast<long>(j));
   return w;
 }
 

@@ -32,9 +32,9 @@ struct Derivatives {
 double white_noise(const std::vector<double>& y);
 
 // The weights on an evenly spaced window of 2 half_width + 1 samples, dt
-// apart, that give the degree-`degree` polynomial's acceleration at its
-// middle (1/s^2).
-std::vector<double> acceleration_weights(size_t half_width, int degree, double dt);
+// apart, that give the degree-`degree` polynomial's derivative of `order`
+// (1: the rate, 1/s; 2: the acceleration, 1/s^2) at its middle.
+std::vector<double> derivative_weights(size_t half_width, int degree, int order, double dt);
 
 // A step this many times the median one is a time gap: a stretch not
 // recorded (the returns of closing-only strokes).

@@ -54,7 +54,6 @@ Replay slice(const Replay& r, size_t from, size_t to) {
   h.file = r.file + label;
   h.turned = r.turned;
   h.x_noise = r.x_noise;
-  h.rate_noise = r.rate_noise;
   h.step = r.step;
   h.inertia = r.inertia;
   h.resolution = r.resolution;
@@ -66,6 +65,7 @@ Replay slice(const Replay& r, size_t from, size_t to) {
   h.x = cut(r.x);
   h.rate = cut(r.rate);
   h.accel = cut(r.accel);
+  h.rate_noise = cut(r.rate_noise);
   h.accel_noise = cut(r.accel_noise);
   h.measured = cut(r.measured);
   h.nominal = cut(r.nominal);

@@ -290,7 +290,7 @@ Fitter::Sums Fitter::replay_sums(size_t i, const std::vector<EffectKind>& linear
     double& sum = out.inflation[static_cast<Eigen::Index>(c)];
     for (size_t s : fitted) {
       const double sd = linear[c] == EffectKind::arm_inertia     ? r.accel_noise[s]
-                        : linear[c] == EffectKind::viscous_damping ? r.rate_noise
+                        : linear[c] == EffectKind::viscous_damping ? r.rate_noise[s]
                                                                    : 0.0;
       sum += w[s] * sd * r.to_newtons * sd * r.to_newtons;
     }

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "derivatives.h"
-#include "smooth_acceleration.h"
+#include "smooth_derivative.h"
 #include "state.h"
 #include "terms.h"
 
@@ -26,12 +26,14 @@ Derivatives differentiate(Replay& r, double resolution) {
   Derivatives d = local_derivatives(r.t, r.x);
   r.step = sample_step(r.t);
   r.x_noise = std::max(white_noise(r.x), resolution);
-  r.rate_noise = r.x_noise * d.rate_noise_gain;
-  SmoothAcceleration a = smooth_acceleration(r.t, r.x, r.x_noise, d);
+  SmoothDerivative v = smooth_derivative(r.t, r.x, r.x_noise, d, 1);
+  SmoothDerivative a = smooth_derivative(r.t, r.x, r.x_noise, d, 2);
+  r.rate_noise = std::move(v.noise_gain);
+  for (double& g : r.rate_noise) g *= r.x_noise;
   r.accel_noise = std::move(a.noise_gain);
-  for (double& v : r.accel_noise) v *= r.x_noise;
-  r.rate = std::move(d.rate);
-  r.accel = std::move(a.accel);
+  for (double& g : r.accel_noise) g *= r.x_noise;
+  r.rate = std::move(v.value);
+  r.accel = std::move(a.value);
   return d;
 }
 
@@ -113,8 +115,9 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
   // Below this speed the arm is at rest: there Coulomb friction takes any
   // value up to its limit, which the motion alone cannot tell.
   // ... and below three times the noise of the rate itself, where its sign
-  // is the noise's.
-  const double still = std::max({1e-9, 0.01 * peak, 3 * r.rate_noise});
+  // is the noise's: each sample's own, from the window it took.
+  const double least = std::max(1e-9, 0.01 * peak);
+  auto still = [&](size_t i) { return std::max(least, 3 * r.rate_noise[i]); };
   r.phase.assign(n, Phase::at_rest);
   r.fitted.assign(n, true);
   r.held.assign(n, false);
@@ -130,7 +133,7 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
   std::vector<size_t> turns;
   for (size_t i = 0; i < n; ++i) {
     const double rate = closing * r.rate[i];
-    const int sign = rate > still ? -1 : (rate < -still ? 1 : 0);  // -1: closing or loading
+    const int sign = rate > still(i) ? -1 : (rate < -still(i) ? 1 : 0);  // -1: closing or loading
     if (sign != 0 && last_sign != 0 && sign != last_sign) turns.push_back(i);
     if (sign != 0) last_sign = sign;
     const bool contact = r.deflection[i] > 0;
@@ -156,7 +159,7 @@ void assign_phases(Replay& r, const std::vector<bool>& at_limit, const std::vect
     // the angle's own noise passes into the prediction through the actee's
     // stiffness, the sample still tells the actee's law by its deflection.
     const bool held = r.deflection[i] > 0 && friction < kHeldBand * std::abs(r.slope[i]) * r.x_noise;
-    const bool moving = std::abs(r.rate[i]) > still && r.phase[i] != Phase::reversal;
+    const bool moving = std::abs(r.rate[i]) > still(i) && r.phase[i] != Phase::reversal;
     if (held && !moving) r.phase[i] = closing * r.rate[i] > 0 ? Phase::loading : Phase::unloading;
     const bool in_motion = r.phase[i] != Phase::reversal && r.phase[i] != Phase::at_rest;
     if (blurred[i] && in_motion) r.phase[i] = Phase::unresolved;

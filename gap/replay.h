@@ -48,12 +48,12 @@ struct Replay {
   // motion's adds to it.
   std::vector<double> weight;
   // The motion sensor's noise (deviation, from x's second differences) and
-  // what the differentiation makes of it in the rate and, sample by sample
-  // (its window is the data's choice: smooth_acceleration.h), the
-  // acceleration.
-  double x_noise = 0, rate_noise = 0;
+  // what the differentiation makes of it, sample by sample (each sample's
+  // window is the data's choice: smooth_derivative.h), in the rate and in
+  // the acceleration.
+  double x_noise = 0;
   double step = 0;  // s, the sampling step, time gaps left out (sample_step)
-  std::vector<double> accel_noise;
+  std::vector<double> rate_noise, accel_noise;
   // kg*m^2: the nominal arm's inertia, through which the acceleration's
   // noise reaches the prediction (0 between plates).
   double inertia = 0;

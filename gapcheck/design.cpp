@@ -460,6 +460,16 @@ double relaxing_change(const Case& c, const SilentPlay& silent, const PlayDrive&
 
 }  // namespace
 
+double actee_rotational_stiffness(const Case& c) {
+  if (!c.tool.actee) return 0.0;
+  const ToolActee& a = *c.tool.actee;
+  return a.stiffness * c.actee_specimen * a.lever * a.lever;
+}
+
+double contact_floor_of(const Case& c) {
+  return std::hypot(c.sensors.effort_noise, c.sensors.angle_noise * actee_rotational_stiffness(c) / c.tool.effort_at);
+}
+
 double library_change(const Case& c, const PlayDrive& play) {
   return free_change(c.drives, play_silent(c, play), play_quiet(c, play));
 }
@@ -530,11 +540,7 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
   const double hand_inertia = c.hand.mass * b * b;  // kg*m^2
   const double free_kp = std::max(hand_inertia * std::pow(2 * std::numbers::pi * uniform(rng, 8, 20), 2), 10 * c.tool.torsion);
   const double free_kv = 2 * uniform(rng, 0.5, 1.0) * std::sqrt(free_kp * hand_inertia);
-  double actee_rotational = 0;  // N*m/rad, the specimen's stiffness about the hinge
-  if (c.tool.actee) {
-    const ToolActee& a = *c.tool.actee;
-    actee_rotational = a.stiffness * c.actee_specimen * a.lever * a.lever;
-  }
+  const double actee_rotational = actee_rotational_stiffness(c);  // N*m/rad
   c.hand.sensor_stiffness = std::max(10 * free_kp, 2 * actee_rotational);
 
   // The drives.
@@ -607,9 +613,7 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
     if (!silent_play) silent_play = play_silent(c, play);
     return *silent_play;
   };
-  // N: in the actee's contact the angle's noise passes into the effort
-  // through the specimen's stiffness: that is the floor there.
-  const double contact_floor = std::hypot(noise, c.sensors.angle_noise * actee_rotational / b);
+  const double contact_floor = contact_floor_of(c);  // N
   const double kind = uniform(rng, 0, 1);
   if (kind < 0.2) {
     damp_sensor(c);

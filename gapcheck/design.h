@@ -161,6 +161,14 @@ using PlayDrive = std::function<std::vector<Measured>(const Case&, const Drive&)
 Case draw_case(const std::filesystem::path& source, const std::filesystem::path& cases_dir, unsigned seed,
                const PlayDrive& play);
 
+// N*m/rad: the case's actee specimen's stiffness about the hinge (0
+// without an actee).
+double actee_rotational_stiffness(const Case& c);
+
+// N: the floor where the jaws press the actee: the effort's noise and the
+// angle's, passed into the effort through the specimen's stiffness.
+double contact_floor_of(const Case& c);
+
 // N: the RMS change the case's effects of the library (c.truth) make in
 // the effort over the samples free of the actee's contact, the case
 // played with silent sensors, with them and without. Each effect, and a

@@ -204,7 +204,7 @@ TEST(Gap, TheAnglesNoiseThroughAnInertiaIsPartOfTheNoiseFloor) {
   // inertia would pass 0.002 * 1.15 / 0.16 m = 0.0144 N into the predicted
   // effort, a floor of hypot(0.02, 0.0144) = 0.0246 N. The slow drive lets
   // the same polynomial over +-200 ms take the acceleration
-  // (smooth_acceleration.h), with a gain of 65.6 s^-2: 0.002 * 6.6e-3 /
+  // (smooth_derivative.h), with a gain of 65.6 s^-2: 0.002 * 6.6e-3 /
   // 0.16 = 8e-5 N, and the floor is the sensor's 0.02 N; the trace's ends,
   // where the narrow window stays, weigh less by as much as they pass.
   Hidden h;
@@ -1063,10 +1063,13 @@ TEST(GapReal, MacadamiaCurvesArePowerLawsWithASoftToe) {
 
 
 TEST(Gap, AFrictionLeftUnderAFloorTheActeesContactRaisesIsNamed) {
-  // A progressive spring alone brings the held-out error under the floor
+  // A progressive spring alone brought the held-out error under the floor
   // (0.55 N against 0.72 N: the angle's noise through the stiff nut, over
-  // the 2828 samples in its contact) and leaves the friction's flip, plain
+  // the 2828 samples in its contact) and left the friction's flip, plain
   // in its shape; the search goes on and the friction earns its place.
+  // Since a rate's sign is judged against its own window's noise, the
+  // press's free closing counts in the floor (0.225 N), and the spring
+  // alone leaves 0.64 N: the friction is found as any effect is.
   const Diagnosis d =
       diagnose(load_measurement(kSource + "/tests/data/gap/press-friction-spring/measurement.yaml"));
   std::vector<EffectKind> named;

@@ -383,24 +383,20 @@ TEST(GapDesigns, WhiteAngleNoiseThroughAHeavyArmIsNoEffect) {
   }
 }
 
-TEST(GapDesigns, ADampingAllButParallelToAFrictionIsNotCompensatedPastItsOwnPart) {
-  // Strokes of one speed each way (a triangle between 13 and 28 deg at 5.5
-  // deg/s, its turns rounded over 0.3 s), 0.15 N*m more friction than the
-  // file's and a damping of 1.9 N*m*s/rad, 5e-4 rad of angle noise: the
-  // damping's column is the friction's times the speed but at the turns.
-  // The rate's noise, taken off the damping's whole sum of squares
-  // (bias-compensated least squares), exceeded the part the friction's
-  // column does not span and left the normal equations indefinite (-1.5
-  // N*m of friction and 18.8 N*m*s/rad, development seed 5082). Taken off
-  // no more than half that part, the two stay physical, and together
-  // give the torque the strokes show.
-  constexpr double kSpeed = 5.5 * kDeg, kTurn = 0.3;  // rad/s, s
-  const double low = 13 * kDeg, high = 28 * kDeg, leg = (high - low) / kSpeed;  // rad, rad, s
-  // The rate: +-kSpeed, turning as a sine over kTurn at each end.
+// Strokes of one speed each way (a triangle between 13 and 28 deg at 5.5
+// deg/s, its turns rounded over 0.3 s), 0.15 N*m more friction than the
+// file's and a damping of 1.9 N*m*s/rad, 5e-4 rad of angle noise, two
+// traces of 12 s: the damping's column is the friction's times the speed
+// but at the turns (development seed 5082, a tongs in ODE).
+constexpr double kOneSpeed = 5.5 * kDeg;  // rad/s
+Measurement one_speed_friction_and_damping() {
+  constexpr double kTurn = 0.3;  // s
+  const double low = 13 * kDeg, high = 28 * kDeg, leg = (high - low) / kOneSpeed;  // rad, rad, s
+  // The rate: +-kOneSpeed, turning as a sine over kTurn at each end.
   const auto rate = [=](double t) {
     const double v = std::fmod(t, 2 * leg), into = std::fmod(v, leg);
     const double to_turn = std::min(into, leg - into);
-    return (v < leg ? -1.0 : 1.0) * kSpeed * (to_turn < 0.5 * kTurn ? std::sin(kPi * to_turn / kTurn) : 1.0);
+    return (v < leg ? -1.0 : 1.0) * kOneSpeed * (to_turn < 0.5 * kTurn ? std::sin(kPi * to_turn / kTurn) : 1.0);
   };
   // The angle, its integral, at each ms (in steps of 0.1 ms).
   std::vector<double> angle = {high};
@@ -418,20 +414,41 @@ TEST(GapDesigns, ADampingAllButParallelToAFrictionIsNotCompensatedPastItsOwnPart
   truth.friction = 0.15;
   truth.angle_noise = 5e-4;
   const auto damping = [](double, const Motion& m) { return -1.9 * m.omega; };
-  const Measurement m = load_measurement(
-      measurement("one-speed", {{"a.csv", trace(truth, 1, 12, 0, triangle, damping)},
-                                {"b.csv", trace(truth, 2, 12, 0, triangle, damping)}})
-          .string());
+  return load_measurement(measurement("one-speed", {{"a.csv", trace(truth, 1, 12, 0, triangle, damping)},
+                                                    {"b.csv", trace(truth, 2, 12, 0, triangle, damping)}})
+                              .string());
+}
+
+TEST(GapDesigns, ADampingAllButParallelToAFrictionIsNotCompensatedPastItsOwnPart) {
+  // The rate's noise, taken off the damping's whole sum of squares
+  // (bias-compensated least squares), exceeded the part the friction's
+  // column does not span and left the normal equations indefinite (-1.5
+  // N*m of friction and 18.8 N*m*s/rad, development seed 5082). Taken off
+  // no more than half that part, the two stay physical, and together
+  // give the torque the strokes show.
+  const Measurement m = one_speed_friction_and_damping();
   const Model model = compile_measurement(m);
   std::vector<Replay> replays = replay_lever(model, m);
-  weigh(replays, truth.effort_noise);
+  weigh(replays, Truth{}.effort_noise);
   const SetFit both = Fitter(model, replays, {0, 1}, {}).fit({EffectKind::pivot_friction, EffectKind::viscous_damping});
   ASSERT_EQ(both.effects.size(), 2u);
   const double friction = both.effects[0].value[0] - 0.01, damped = both.effects[1].value[0];  // over the file's
   EXPECT_TRUE(both.valid) << friction << " N*m, " << damped << " N*m*s/rad";
   EXPECT_GT(friction, 0) << damped;
   EXPECT_GT(damped, 0) << friction;
-  EXPECT_NEAR(friction + damped * kSpeed, 0.15 + 1.9 * kSpeed, 0.01) << friction << " N*m, " << damped << " N*m*s/rad";
+  EXPECT_NEAR(friction + damped * kOneSpeed, 0.15 + 1.9 * kOneSpeed, 0.01) << friction << " N*m, " << damped << " N*m*s/rad";
+}
+
+TEST(GapDesigns, ADampingBesideAFrictionAtOneSpeedIsNamedWithIt) {
+  // The same strokes, diagnosed. The rate from the +-25 ms window carries
+  // 5e-4 rad * 42 s^-1 = 0.021 rad/s of noise, which the damping passes on
+  // as 0.04 N*m, 0.25 N at the effort (0.16 m): five times the 0.05 N the
+  // friction alone leaves, so the damping never earned its place and the
+  // friction alone read `unexplained`. The strokes let the rate take the
+  // +-200 ms window, 22 times less noisy (0.011 N), and both are named.
+  const Diagnosis d = diagnose(one_speed_friction_and_damping());
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  EXPECT_TRUE(names(d, {EffectKind::pivot_friction, EffectKind::viscous_damping})) << report_text(d);
 }
 
 TEST(GapDesigns, AHeavyArmTheFileLacksIsNamedUnderAngleNoise) {

@@ -73,11 +73,7 @@ TEST(GapcheckMujocoReality, AViscoelasticActeeIsDrawnOnlyWhereItShowsAtTwiceTheF
     const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, seed, play);
     if (c.outside.viscoelastic_share == 0) continue;
     ++relaxing;
-    const gapcheck::ToolActee& a = *c.tool.actee;
-    const double b = c.tool.effort_at;                                              // m
-    const double rotational = a.stiffness * c.actee_specimen * a.lever * a.lever;  // N*m/rad
-    const double floor = std::hypot(c.sensors.effort_noise, c.sensors.angle_noise * rotational / b);  // N
-    EXPECT_GE(gapcheck::viscoelastic_change(c, play), 2 * floor) << "seed " << seed;
+    EXPECT_GE(gapcheck::viscoelastic_change(c, play), 2 * gapcheck::contact_floor_of(c)) << "seed " << seed;
   }
   EXPECT_GE(relaxing, 1);
 }
@@ -120,10 +116,6 @@ TEST(GapcheckMujocoReality, AnActeesLawIsDrawnOnlyWhereItShowsAtTwiceTheFloor) {
     const unsigned seed = 3443;
     const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, seed, play);
     ASSERT_GT(c.truth.actee_exponent, 0.0) << "seed " << seed;
-    const gapcheck::ToolActee& a = *c.tool.actee;
-    const double b = c.tool.effort_at;                                              // m
-    const double rotational = a.stiffness * c.actee_specimen * a.lever * a.lever;  // N*m/rad
-    const double floor = std::hypot(c.sensors.effort_noise, c.sensors.angle_noise * rotational / b);  // N
-    EXPECT_GE(gapcheck::actee_law_change(c, play), 2 * floor) << "seed " << seed;  // 12.9 N against 3.6 N
+    EXPECT_GE(gapcheck::actee_law_change(c, play), 2 * gapcheck::contact_floor_of(c)) << "seed " << seed;  // 12.9 N against 3.6 N
   }
 }

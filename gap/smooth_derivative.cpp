@@ -1,4 +1,4 @@
-#include "smooth_acceleration.h"
+#include "smooth_derivative.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@ namespace {
 // polynomial's degree is the narrow window's.
 constexpr double kWideWindows[] = {0.05, 0.1, 0.2};
 // s, each side: the stretch over which a window's bias is averaged. The
-// difference of two windows' accelerations is mostly their noise, whose
+// difference of two windows' derivatives is mostly their noise, whose
 // own scatter hides a bias below it; over +-0.4 s (some 30 independent
 // stretches of the narrow window) a bias as large as the noise saved
 // stands four of that scatter's deviations clear.
@@ -22,11 +22,11 @@ double norm(const std::vector<double>& w) {
   return std::sqrt(s);
 }
 
-// One window's acceleration at each sample where it is centred and evenly
+// One window's derivative at each sample where it is centred and evenly
 // spaced (`usable`).
 struct Window {
   std::vector<double> weights;
-  std::vector<double> accel;
+  std::vector<double> value;
   std::vector<bool> usable;
 };
 
@@ -37,7 +37,7 @@ Window apply(const std::vector<double>& weights, const std::vector<double>& y, c
     if (uneven_before[i + m] != uneven_before[i - m]) continue;
     double a = 0;
     for (size_t j = 0; j < weights.size(); ++j) a += weights[j] * y[i - m + j];
-    w.accel[i] = a;
+    w.value[i] = a;
     w.usable[i] = true;
   }
   return w;
@@ -49,14 +49,15 @@ Window apply(const std::vector<double>& weights, const std::vector<double>& y, c
 // next wider window while what the two differ by, beyond their noises,
 // stays below the noise the wider one saves, and stops at the first that
 // does not (a bias, once there, only grows with the window).
-SmoothAcceleration smooth_acceleration(const std::vector<double>& t, const std::vector<double>& y, double noise,
-                                       const Derivatives& narrow) {
+SmoothDerivative smooth_derivative(const std::vector<double>& t, const std::vector<double>& y, double noise,
+                                   const Derivatives& narrow, int order) {
   const size_t n = t.size();
-  SmoothAcceleration out{narrow.accel, std::vector<double>(n, 0.0)};
-  if (n < 2 || narrow.degree < 2) return out;
+  const std::vector<double>& narrow_value = order == 1 ? narrow.rate : narrow.accel;
+  SmoothDerivative out{narrow_value, std::vector<double>(n, 0.0)};
+  if (n < 2 || narrow.degree < order) return out;
   const double dt = sample_step(t);
   const size_t m0 = narrow.half_width;
-  Window current{acceleration_weights(m0, narrow.degree, dt), narrow.accel, std::vector<bool>(n, true)};
+  Window current{derivative_weights(m0, narrow.degree, order, dt), narrow_value, std::vector<bool>(n, true)};
   std::fill(out.noise_gain.begin(), out.noise_gain.end(), norm(current.weights));
   if (!(noise > 0)) return out;
 
@@ -71,7 +72,7 @@ SmoothAcceleration smooth_acceleration(const std::vector<double>& t, const std::
   for (double window : kWideWindows) {
     const size_t m = static_cast<size_t>(std::lround(window / dt));
     if (m * 2 <= current.weights.size() - 1 || 2 * m + 1 > n) break;
-    Window wider = apply(acceleration_weights(m, narrow.degree, dt), y, uneven_before);
+    Window wider = apply(derivative_weights(m, narrow.degree, order, dt), y, uneven_before);
     // The noise the two windows' difference passes: the narrower's weights
     // sit in the middle of the wider's.
     std::vector<double> difference = wider.weights;
@@ -83,7 +84,7 @@ SmoothAcceleration smooth_acceleration(const std::vector<double>& t, const std::
     excess_before[0] = usable_before[0] = 0;
     for (size_t i = 0; i < n; ++i) {
       const bool both = wider.usable[i] && current.usable[i];
-      const double d = both ? wider.accel[i] - current.accel[i] : 0.0;
+      const double d = both ? wider.value[i] - current.value[i] : 0.0;
       excess_before[i + 1] = excess_before[i] + (both ? d * d - difference_variance : 0.0);
       usable_before[i + 1] = usable_before[i] + (both ? 1 : 0);
     }
@@ -100,7 +101,7 @@ SmoothAcceleration smooth_acceleration(const std::vector<double>& t, const std::
         widening[i] = false;
         continue;
       }
-      out.accel[i] = wider.accel[i];
+      out.value[i] = wider.value[i];
       out.noise_gain[i] = wider_gain;
     }
     current = std::move(wider);
