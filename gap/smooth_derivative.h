@@ -5,8 +5,8 @@
 // noise becomes 3.5 rad/s^2, more than a slow drive's whole acceleration,
 // and an arm's inertia is then fitted to noise (held out it cuts little);
 // 5e-4 rad becomes 0.021 rad/s, which a damping of 1.9 N*m*s/rad passes
-// on as 0.04 N*m, five times what the damping leaves unexplained beside a
-// friction on strokes of one speed.
+// on as 0.04 N*m, five times the gap a friction alone leaves it to explain
+// on strokes of one speed.
 // The same polynomial over +-50, +-100 or +-200 ms passes 5.5, 31 and
 // about 170 times less of the noise in the acceleration (2.8, 8 and 22
 // times less in the rate), but smooths what changes faster than its
