@@ -28,10 +28,11 @@ struct Derivatives {
 // The deviation of a signal's white noise: white noise of deviation s
 // gives second differences of deviation s * sqrt(6), which a smooth
 // signal hardly adds to. The smaller half of their absolute values is not
-// moved by a few jumps (a stop, a reversal, a crack); its mean, not its
-// largest value (the median), for a signal counted in steps makes every
-// second difference a whole number of steps, and the median falls on one:
-// 0.0569 N for white noise of 0.0604 N counted in 0.0234 N steps.
+// moved by a few jumps (a stop, a reversal, a crack). Its mean is taken,
+// not its largest value (the median): a signal counted in steps makes
+// every second difference a whole number of steps, and the median falls
+// on one (0.0567 N for white noise of 0.0604 N counted in 0.0234 N
+// steps).
 double white_noise(const std::vector<double>& y);
 
 // The same from the absolute second differences themselves (their order

@@ -117,7 +117,7 @@ TEST(Derivatives, ASignalCountedInStepsHasItsWholeNoise) {
   // White noise of 0.06 N read by a converter in 0.0234 N steps: the
   // noise the residual carries is sqrt(0.06^2 + 0.0234^2 / 12) = 0.06038
   // N. Every second difference is a whole number of steps, and their
-  // median falls on one: 4 steps give 0.0566 N, 6 % short, which made
+  // median falls on one: 4 steps give 0.0567 N, 6 % short, which made
   // an effect-free trace's residual read 1.16 times its noise
   // (development seed 6005, both engines).
   const double whole = std::sqrt(0.06 * 0.06 + 0.0234 * 0.0234 / 12);
