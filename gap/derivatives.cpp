@@ -50,8 +50,8 @@ double white_noise_of_second_differences(std::vector<double>& abs_d2) {
   double sum = 0;
   for (size_t i = 0; i < half; ++i) sum += abs_d2[i];
   // |X| for X normal of deviation sd, below its median 0.67449 sd, has
-  // mean 4 (phi(0) - phi(0.67449)) sd = 0.324661 sd; X = s sqrt(6).
-  constexpr double kLowerHalfMean = 0.324661;
+  // mean 4 (phi(0) - phi(0.674490)) sd = 0.324663 sd; X = s sqrt(6).
+  constexpr double kLowerHalfMean = 0.324663;
   return sum / static_cast<double>(half) / (kLowerHalfMean * std::sqrt(6.0));
 }
 

@@ -42,8 +42,9 @@ Derivatives differentiate(Replay& r, double resolution) {
 // ringing, a snap) or in the measured effort (a ringing below the angle's
 // noise still moves the effort through the arm's inertia, A w^2 times
 // it), or the window reaches across the break (a kink no polynomial
-// follows). A noise's RMS over a window of some 50 samples is known to a
-// tenth. The effort is looked at less what the nominal model predicts
+// follows) or from a free sample into the actee's contact (below). A
+// noise's RMS over a window of some 50 samples is known to a tenth. The
+// effort is looked at less what the nominal model predicts
 // from the angle alone (`effort_left`, N): a stiff actee's law turns the
 // jaws' touch into a kink of the effort that the angle explains, which is
 // not motion the samples miss. Its noise (`effort_variance`, N^2, sample
@@ -67,6 +68,20 @@ std::vector<bool> unresolved(const Derivatives& d, const Replay& r, const std::v
     const bool across_break = break_at != SIZE_MAX && i + m >= break_at && i <= break_at + m;
     if (!across_break && d.misfit[i] <= allowed && e.misfit[i] <= allowed_effort) continue;
     for (size_t j = from; j <= to; ++j) out[j] = true;
+  }
+  // A free sample whose window reaches into the actee's contact: as the
+  // jaws touch or leave it the force on the arm changes at once, a hand
+  // that drives the arm answers with a jolt, and the window smears that
+  // jolt's acceleration over the free samples beside it. Its misfit is
+  // diluted among the window's and hidden in the contact's noise (the
+  // actee's stiffness passes the angle's noise on). A press leaving its
+  // actee left 10 times the noise in the free samples within 25 ms of it,
+  // 0.03 N elsewhere (development seeds 6159 and 6471, ODE).
+  std::vector<size_t> touching(n + 1, 0);
+  for (size_t i = 0; i < n; ++i) touching[i + 1] = touching[i] + (r.deflection[i] > 0 ? 1 : 0);
+  for (size_t i = 0; i < n; ++i) {
+    const size_t from = i >= m ? i - m : 0, to = std::min(n - 1, i + m);
+    if (r.deflection[i] <= 0 && touching[to + 1] > touching[from]) out[i] = true;
   }
   return out;
 }

@@ -90,10 +90,10 @@ TEST(Derivatives, AShortOrCoarseTraceStillGetsAFit) {
 
 TEST(Derivatives, TheNoiseIsTheSmallerHalfsMeanOfTheSecondDifferences) {
   // Of 0, 3, 1, 2 the smaller half is 0 and 1, mean 0.5; a normal law's
-  // |X| below its median has mean 0.324661 of its deviation, and second
-  // differences have sqrt(6) times the noise's: 0.5 / (0.324661 sqrt 6).
+  // |X| below its median has mean 0.324663 of its deviation, and second
+  // differences have sqrt(6) times the noise's: 0.5 / (0.324663 sqrt 6).
   std::vector<double> d2 = {0, 3, 1, 2};
-  EXPECT_NEAR(white_noise_of_second_differences(d2), 0.5 / (0.324661 * std::sqrt(6.0)), 1e-12);
+  EXPECT_NEAR(white_noise_of_second_differences(d2), 0.5 / (0.324663 * std::sqrt(6.0)), 1e-12);
   std::vector<double> none;
   EXPECT_EQ(white_noise_of_second_differences(none), 0.0);
 }
