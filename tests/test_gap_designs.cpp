@@ -1321,13 +1321,14 @@ TEST(GapDesigns, AJoltAsTheJawsLeaveTheActeeIsLeftOutNotReadAsAnEffect) {
     if (base((i - 1) * 1e-3).theta < j.theta_c && base(i * 1e-3).theta >= j.theta_c) releases.push_back(i * 1e-3);
   }
   // The jolt: x(s) = kick (1 - e^(-s / quick)) e^(-s / slow) after a
-  // release, s in s.
+  // release, s in s; smooth after it (a release a second back has left
+  // 1e-6 rad).
   const double kick = 1e-3, quick = 0.004, slow = 0.15;  // rad, s, s
   const auto motion = [&](double t) {
     Motion m = base(t);
     for (double at : releases) {
       const double s = t - at;
-      if (s < 0 || s > 1.5 * slow) continue;
+      if (s < 0) continue;
       const double a = std::exp(-s / quick), b = std::exp(-s / slow), r = 1 / quick + 1 / slow;
       m.theta += kick * (b - a * b);
       m.omega += kick * (-b / slow + r * a * b);
