@@ -103,6 +103,9 @@ struct Block {
   size_t trace = 0, from = 0, to = 0;
 };
 
+// A sample fitted with the jaws on the actee.
+bool fitted_in_contact(const Replay& r, size_t s) { return r.fitted[s] && r.deflection[s] > 0; }
+
 // A contact too short to share out (a squeeze before an early crack)
 // still holds all that the actee's law shows. Left in one block, the fold
 // that judges it fits the law on no contact at all and the law is never
@@ -115,20 +118,18 @@ struct Block {
 // kMinContactCut samples (12 where a sine's first closing cracks a nut at
 // once) is left whole: halves of a few samples fit no law and judge none,
 // and the cut would only leave a block far smaller than the rest.
-template <class InContact>
-std::vector<Block> with_contact_cut(const std::vector<Replay>& replays, const std::vector<Block>& blocks,
-                                    InContact in_contact) {
+std::vector<Block> with_contact_cut(const std::vector<Replay>& replays, const std::vector<Block>& blocks) {
   std::vector<Block> out;
   for (const Block& b : blocks) {
     const Replay& r = replays[b.trace];
     size_t contact = 0, fitted = 0;
     for (size_t s = b.from; s < b.to; ++s) {
-      contact += in_contact(r, s) ? 1 : 0;
+      contact += fitted_in_contact(r, s) ? 1 : 0;
       fitted += r.fitted[s] ? 1 : 0;
     }
     size_t cut = b.from, seen = 0, fitted_before = 0;
     for (; cut < b.to && 2 * seen < contact; ++cut) {
-      seen += in_contact(r, cut) ? 1 : 0;
+      seen += fitted_in_contact(r, cut) ? 1 : 0;
       fitted_before += r.fitted[cut] ? 1 : 0;
     }
     if (contact < kMinContactCut || fitted_before < kMinContactCut || fitted - fitted_before < kMinContactCut) {
@@ -140,13 +141,13 @@ std::vector<Block> with_contact_cut(const std::vector<Replay>& replays, const st
   }
   return out;
 }
+
 std::vector<Block> blocks_of(const std::vector<Replay>& replays) {
-  auto in_contact = [](const Replay& r, size_t s) { return r.fitted[s] && r.deflection[s] > 0; };
   double fitted_all = 0, contact_all = 0;
   for (const Replay& r : replays) {
     for (size_t s = 0; s < r.t.size(); ++s) {
       fitted_all += r.fitted[s] ? 1 : 0;
-      contact_all += in_contact(r, s) ? 1 : 0;
+      contact_all += fitted_in_contact(r, s) ? 1 : 0;
     }
   }
   // Each sample's share of what can be judged: all of it adds up to 1.
@@ -154,7 +155,7 @@ std::vector<Block> blocks_of(const std::vector<Replay>& replays) {
   if (short_contact) contact_all = 0;
   const double halves = contact_all > 0 ? 2 : 1;
   auto mass = [&](const Replay& r, size_t s) {
-    return ((r.fitted[s] ? 1 / fitted_all : 0.0) + (contact_all > 0 && in_contact(r, s) ? 1 / contact_all : 0.0)) /
+    return ((r.fitted[s] ? 1 / fitted_all : 0.0) + (contact_all > 0 && fitted_in_contact(r, s) ? 1 / contact_all : 0.0)) /
            halves;
   };
   std::vector<double> owns(replays.size(), 0.0);
@@ -206,7 +207,7 @@ std::vector<Block> blocks_of(const std::vector<Replay>& replays) {
       out.push_back({i, from, r.t.size()});
     }
   }
-  if (short_contact) out = with_contact_cut(replays, out, in_contact);
+  if (short_contact) out = with_contact_cut(replays, out);
   return out;
 }
 

@@ -57,31 +57,30 @@ std::vector<bool> unresolved(const Derivatives& d, const Replay& r, const std::v
   // The noise's variance summed up to each sample: its mean over a window.
   std::vector<double> summed(n + 1, 0.0);
   for (size_t i = 0; i < n; ++i) summed[i + 1] = summed[i] + effort_variance[i];
+  // Contact samples counted up to each sample: whether a window holds any.
+  std::vector<size_t> touching(n + 1, 0);
+  for (size_t i = 0; i < n; ++i) touching[i + 1] = touching[i] + (r.deflection[i] > 0 ? 1 : 0);
   // A misfit marks its window's middle; what it cannot follow lies
   // somewhere in the window, and a ringing's tail decays past it: the
   // whole window is left out.
+  // A free sample whose window reaches into the actee's contact is left
+  // out alone: as the jaws touch or leave it the force on the arm changes
+  // at once, a hand that drives the arm answers with a jolt, and the
+  // window smears that jolt's acceleration over the free samples beside
+  // it. Its misfit is diluted among the window's and hidden in the
+  // contact's noise (the actee's stiffness passes the angle's noise on).
+  // A press leaving its actee left 10 times the noise in the free samples
+  // within 25 ms of it, 0.03 N elsewhere (development seeds 6159 and 6471,
+  // ODE).
   std::vector<bool> out(n, false);
   for (size_t i = 0; i < n; ++i) {
     const size_t from = i >= m ? i - m : 0, to = std::min(n - 1, i + m);
+    if (r.deflection[i] <= 0 && touching[to + 1] > touching[from]) out[i] = true;
     const double variance = (summed[to + 1] - summed[from]) / static_cast<double>(to + 1 - from);
     const double allowed_effort = kUnresolved * std::sqrt(variance) * e.misfit_noise_gain;
     const bool across_break = break_at != SIZE_MAX && i + m >= break_at && i <= break_at + m;
     if (!across_break && d.misfit[i] <= allowed && e.misfit[i] <= allowed_effort) continue;
     for (size_t j = from; j <= to; ++j) out[j] = true;
-  }
-  // A free sample whose window reaches into the actee's contact: as the
-  // jaws touch or leave it the force on the arm changes at once, a hand
-  // that drives the arm answers with a jolt, and the window smears that
-  // jolt's acceleration over the free samples beside it. Its misfit is
-  // diluted among the window's and hidden in the contact's noise (the
-  // actee's stiffness passes the angle's noise on). A press leaving its
-  // actee left 10 times the noise in the free samples within 25 ms of it,
-  // 0.03 N elsewhere (development seeds 6159 and 6471, ODE).
-  std::vector<size_t> touching(n + 1, 0);
-  for (size_t i = 0; i < n; ++i) touching[i + 1] = touching[i] + (r.deflection[i] > 0 ? 1 : 0);
-  for (size_t i = 0; i < n; ++i) {
-    const size_t from = i >= m ? i - m : 0, to = std::min(n - 1, i + m);
-    if (r.deflection[i] <= 0 && touching[to + 1] > touching[from]) out[i] = true;
   }
   return out;
 }

@@ -15,8 +15,9 @@ namespace afford {
 // Where a sample lies, from the model's own state along the trace.
 // `unresolved`: motion faster than the samples resolve (a ringing, a snap,
 // a derivative window across the break, a free sample's window reaching
-// into the actee's contact), where the rates are not the motion's. `after_break` is the snap as the actee gives way, until the
-// motion settles; after it the tool is replayed as a tool without an actee.
+// into the actee's contact), where the rates are not the motion's.
+// `after_break` is the snap as the actee gives way, until the motion
+// settles; after it the tool is replayed as a tool without an actee.
 enum class Phase { free_closing, free_opening, reversal, loading, unloading, at_rest, at_limit, after_break, unresolved };
 inline constexpr int kPhases = 9;
 const char* phase_name(Phase p);
