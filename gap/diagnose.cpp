@@ -580,9 +580,12 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // coloured noise's lags are correlated, so the statistic's tail is
   // heavier than chi-square's: just over the point is not yet a shape (a
   // force sensor's gain error one way up is 1434 against 37.6).
-  auto white_under = [&](const SetFit& f) {
+  auto whiteness_of = [&](const SetFit& f) {
     const std::vector<std::vector<double>> noise = noise_through(fitter, noisier_fitter, replays, noisier, f);
-    const ResidualTest t = whiteness(replays, weighed_residual(f), all, &noise);
+    return whiteness(replays, weighed_residual(f), all, &noise);
+  };
+  auto white_under = [&](const SetFit& f) {
+    const ResidualTest t = whiteness_of(f);
     return t.q <= kStructured * t.threshold;
   };
   auto effects_match = [&](const Scored& f) {
@@ -733,7 +736,12 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       }
       if (branches.size() > 1) d.steps.push_back("  as good: " + sets_text({branches.begin() + 1, branches.end()}));
       current_scored = pick.scored;
-      if (effects_match(current_scored)) break;
+      // A set that explains ends the search, unless it lies over the floor
+      // with a shape the whiteness test finds (short of twice its point):
+      // then a further effect may still earn its place by the plain test
+      // (a preload within the tolerance left a weight's shape following
+      // the angle: development seed 6531, ODE).
+      if (effects_match(current_scored) && (within(current_scored, 1.0) || whiteness_of(current_scored.fit).white)) break;
     }
   }
   // Forward selection adds one effect at a time, each for what it cuts
@@ -960,8 +968,14 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // effect: one is asked for only where a pair fell short, and white in
   // sample it has chased what the pair left (an inertia added to a spring
   // and a late sensor, 1.29 times the floor held out: development seed
-  // 6293, both engines).
-  const bool white_explains = d.residual.white && (matched(current_scored) || chosen.size() <= 2);
+  // 6293, both engines). Nor where the held-out samples are missed by
+  // more than the tolerance again (kMatched squared, 1.32 times the
+  // floor): a damping and a late sensor fitted to three blocks of 250
+  // samples, white in sample, left 1.97 times the floor held out where
+  // friction had been withheld from the library, and were named
+  // (development seed 6291, both engines).
+  const bool white_explains = d.residual.white && (matched(current_scored) || chosen.size() <= 2) &&
+                              within(current_scored, kMatched * kMatched);
 
   // Samples the model predicts (free motion, a squeeze) are what anything
   // is judged on: a trace all reversals, rests and unresolved motion

@@ -1139,6 +1139,48 @@ TEST(Gap, AThirdEffectThatLeavesTheHeldOutSamplesOverTheNoiseHasNotExplainedTheG
   EXPECT_GT(d.shrink, 0.8) << report_text(d);
 }
 
+TEST(Gap, ASecondEffectThatTheShapeLeftBesideAMatchedFirstAsksForIsFound) {
+  // The tongs squeezing an egg, turned 90 deg (development seed 6531,
+  // ODE): a preload 3.2 N higher and a weight of 0.24 N*m. The preload
+  // alone left 1.1 times the floor held out, within the tolerance, with a
+  // shape just over the whiteness test's point (Q 63 against 37.6) that
+  // follows the angle: the weight, whose cosine over the travel is not
+  // quite the preload's constant. Named alone, the preload was a confident
+  // half of the truth; the search goes on while the residual keeps a
+  // shape, and the weight earns its place.
+  const Diagnosis d = diagnose(load_measurement(kSource + "/tests/data/gap/tongs-weight-preload-egg/measurement.yaml"));
+  EXPECT_EQ(d.verdict, Verdict::ambiguous) << report_text(d);
+  const std::vector<EffectKind> truth = {EffectKind::spring_preload, EffectKind::gravity};
+  EXPECT_THAT(d.ambiguous, testing::Contains(testing::UnorderedElementsAreArray(truth))) << report_text(d);
+  EXPECT_LE(d.ambiguous.size(), 3u) << report_text(d);
+  const EffectFit* weight = find(d, EffectKind::gravity);
+  ASSERT_NE(weight, nullptr) << report_text(d);
+  EXPECT_NEAR(weight->value[0], 0.24, 0.03) << report_text(d);  // N*m
+  EXPECT_TRUE(d.residual.white) << report_text(d);
+}
+
+TEST(Gap, APairWhiteInSampleThatMissesTheHeldOutSamplesFarHasNotExplainedTheGap) {
+  // The nutcracker cracking a hazelnut in its first cycle and going on,
+  // its friction 0.076 N*m over its file's (development seed 6291, ODE),
+  // with friction left out of the library. A damping and a late sensor,
+  // fitted to three blocks of 250 samples, leave a residual white in
+  // sample and twice the floor held out: they have not explained the gap.
+  const Measurement m = load_measurement(kSource + "/tests/data/gap/nutcracker-friction-hazelnut/measurement.yaml");
+  const Diagnosis all = diagnose(m);
+  EXPECT_EQ(all.verdict, Verdict::explained) << report_text(all);
+  ASSERT_EQ(all.effects.size(), 1u) << report_text(all);
+  EXPECT_EQ(all.effects[0].kind, EffectKind::pivot_friction) << report_text(all);
+
+  DiagnoseOptions without_friction;
+  without_friction.library = {EffectKind::viscous_damping, EffectKind::spring_preload, EffectKind::progressive_spring,
+                              EffectKind::arm_inertia,     EffectKind::gravity,        EffectKind::sensor_latency,
+                              EffectKind::actee_compliance};
+  const Diagnosis d = diagnose(m, without_friction);
+  EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
+  EXPECT_TRUE(d.residual.white) << report_text(d);
+  EXPECT_GT(d.rmse_after, 1.5 * d.noise_through_model) << report_text(d);
+}
+
 // The step a measured column is counted in, worked by hand: an encoder's
 // count of 2 pi / 34925 rad = 1.799e-4 rad, printed to 1e-7 rad; a
 // converter's bit of 0.110328 N printed to 1e-6 N.
