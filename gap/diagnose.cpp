@@ -740,8 +740,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // with a shape the whiteness test finds (short of twice its point):
       // then a further effect may still earn its place by the plain test
       // (a preload within the tolerance left a weight's shape following
-      // the angle: development seed 6531, ODE).
-      if (effects_match(current_scored) && (within(current_scored, 1.0) || whiteness_of(current_scored.fit).white)) break;
+      // the angle: development seed 6531, ODE). effects_match with the
+      // residual white, its whiteness tested once: white is under twice
+      // the point too.
+      if (!nominal_within && (within(current_scored, 1.0) ||
+                              (matched(current_scored) && whiteness_of(current_scored.fit).white))) {
+        break;
+      }
     }
   }
   // Forward selection adds one effect at a time, each for what it cuts
