@@ -1159,6 +1159,36 @@ TEST(Gap, ASecondEffectThatTheShapeLeftBesideAMatchedFirstAsksForIsFound) {
   EXPECT_TRUE(d.residual.white) << report_text(d);
 }
 
+TEST(Gap, ARunnerUpThatLeavesTheGapUnexplainedWhereTheBestExplainsItIsNotAsGood) {
+  // The tongs squeezing an egg lightly on a sine, one way up (development
+  // seed 6039, ODE): a preload 0.038 N*m lower and a damping of 0.169
+  // N*m*s/rad. A weight and a progressive spring are look-alikes of the
+  // preload here, so three pairs with the damping explain the gap alike.
+  // A friction in the damping's place cut nearly as much and the paired
+  // test's batches did not tell it apart, but it leaves 1.5 times the
+  // floor held out: it was listed as well, five sets in all.
+  const Diagnosis d = diagnose(load_measurement(kSource + "/tests/data/gap/tongs-preload-damping-egg/measurement.yaml"));
+  EXPECT_EQ(d.verdict, Verdict::ambiguous) << report_text(d);
+  const std::vector<EffectKind> truth = {EffectKind::spring_preload, EffectKind::viscous_damping};
+  EXPECT_THAT(d.ambiguous, testing::Contains(testing::UnorderedElementsAreArray(truth))) << report_text(d);
+  EXPECT_LE(d.ambiguous.size(), 3u) << report_text(d);
+  for (const std::vector<EffectKind>& set : d.ambiguous) {
+    EXPECT_THAT(set, testing::Not(testing::Contains(EffectKind::pivot_friction))) << report_text(d);
+  }
+  const EffectFit* damping = find(d, EffectKind::viscous_damping);
+  ASSERT_NE(damping, nullptr) << report_text(d);
+  EXPECT_NEAR(damping->value[0], 0.169, 0.01) << report_text(d);  // N*m*s/rad
+
+  // On its own, the friction's pair is unexplained: the runner-up the
+  // search no longer lists.
+  DiagnoseOptions friction_pair;
+  friction_pair.library = {EffectKind::spring_preload, EffectKind::pivot_friction};
+  const Diagnosis f = diagnose(load_measurement(kSource + "/tests/data/gap/tongs-preload-damping-egg/measurement.yaml"),
+                               friction_pair);
+  EXPECT_EQ(f.verdict, Verdict::unexplained) << report_text(f);
+  EXPECT_GT(f.rmse_after, 1.3 * f.noise_through_model) << report_text(f);
+}
+
 TEST(Gap, APairWhiteInSampleThatMissesTheHeldOutSamplesFarHasNotExplainedTheGap) {
   // The nutcracker cracking a hazelnut in its first cycle and going on,
   // its friction 0.076 N*m over its file's (development seed 6291, ODE),
