@@ -700,13 +700,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       auto cut_of = [&](const Scored& f) { return was * was - rmse_in(f, contact) * rmse_in(f, contact); };  // N^2
       const double cut = cut_of(best.scored);
       const std::vector<double> best_sq = where(best.scored.sq);
-      // Where the best explains the gap, a runner-up that does not has
-      // not explained it as well: its own verdict would be `unexplained`,
+      // Where the best explains the gap, a runner-up that does not (over
+      // the tolerance, or within it with a clear shape) is not as good,
       // however the paired test's batches weigh a misfit that comes back
       // each cycle (a friction leaving 1.54 times the floor held out
       // beside the true damping at it, on a sine: development seed 6039,
-      // ODE). The converse of a runner-up that explains where the best
-      // does not, below.
+      // both engines). The converse of a runner-up that explains where
+      // the best does not, below.
       const bool best_explains = effects_match(best.scored);
       std::vector<const Tried*> good = {&best};
       for (size_t j = 1; j < tried.size(); ++j) {
