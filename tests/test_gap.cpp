@@ -1167,7 +1167,8 @@ TEST(Gap, ARunnerUpThatLeavesTheGapUnexplainedWhereTheBestExplainsItIsNotAsGood)
   // A friction in the damping's place cut nearly as much and the paired
   // test's batches did not tell it apart, but it leaves 1.5 times the
   // floor held out: it was listed as well, five sets in all.
-  const Diagnosis d = diagnose(load_measurement(kSource + "/tests/data/gap/tongs-preload-damping-egg/measurement.yaml"));
+  const Measurement m = load_measurement(kSource + "/tests/data/gap/tongs-preload-damping-egg/measurement.yaml");
+  const Diagnosis d = diagnose(m);
   EXPECT_EQ(d.verdict, Verdict::ambiguous) << report_text(d);
   const std::vector<EffectKind> truth = {EffectKind::spring_preload, EffectKind::viscous_damping};
   EXPECT_THAT(d.ambiguous, testing::Contains(testing::UnorderedElementsAreArray(truth))) << report_text(d);
@@ -1183,8 +1184,7 @@ TEST(Gap, ARunnerUpThatLeavesTheGapUnexplainedWhereTheBestExplainsItIsNotAsGood)
   // search no longer lists.
   DiagnoseOptions friction_pair;
   friction_pair.library = {EffectKind::spring_preload, EffectKind::pivot_friction};
-  const Diagnosis f = diagnose(load_measurement(kSource + "/tests/data/gap/tongs-preload-damping-egg/measurement.yaml"),
-                               friction_pair);
+  const Diagnosis f = diagnose(m, friction_pair);
   EXPECT_EQ(f.verdict, Verdict::unexplained) << report_text(f);
   EXPECT_GT(f.rmse_after, 1.3 * f.noise_through_model) << report_text(f);
 }
