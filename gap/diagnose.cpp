@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 #include <random>
 
 namespace afford {
@@ -501,9 +502,12 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // scaled to the effort sensor's noise (times the root of its weight):
     // pure noise gives the sensor's noise, however little the samples weigh.
     double rmse_contact = 0;
+    // Its residual's whiteness test, once asked: the search asks it of
+    // the same set at several of its tests.
+    mutable std::optional<ResidualTest> residual_test;
   };
   auto score_anew = [&](const std::vector<EffectKind>& set) {
-    Scored out{fitter.fit(set), {}, 0.0};
+    Scored out{fitter.fit(set), {}, 0.0, std::nullopt};
     SetFit& f = out.fit;
     double sq = 0, weights = 0;
     size_t n = 0;
@@ -560,6 +564,15 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     }
     return out;
   };
+  // A set's residual tested for whiteness, the noise its prediction
+  // carries by itself taken off (once a set: kept with its score).
+  auto whiteness_of = [&](const Scored& f) -> const ResidualTest& {
+    if (!f.residual_test) {
+      const std::vector<std::vector<double>> noise = noise_through(fitter, noisier_fitter, replays, noisier, f.fit);
+      f.residual_test = whiteness(replays, weighed_residual(f.fit), all, &noise);
+    }
+    return *f.residual_test;
+  };
   const std::vector<std::vector<double>> before = weighed_residual(nominal);
   // The nominal model matches to the noise when its held-out RMSE is at
   // the noise, or within kMatched of it (the noise's own estimate is not
@@ -567,9 +580,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // small effect over many samples, its RMSE near the noise but its shape
   // plain: the search asks whether a candidate explains it.
   const bool nominal_within = matched(nominal_scored);
-  const std::vector<std::vector<double>> noise_before = noise_through(fitter, noisier_fitter, replays, noisier, nominal);
-  const bool nominal_matched =
-      within(nominal_scored, 1.0) || (nominal_within && whiteness(replays, before, all, &noise_before).white);
+  const bool nominal_matched = within(nominal_scored, 1.0) || (nominal_within && whiteness_of(nominal_scored).white);
   // Effects added match once at the floor, or within the tolerance with
   // a white residual, where the nominal model was not. Where it was, the
   // gap is its structure, and what explains it leaves a white residual: a
@@ -580,16 +591,12 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // coloured noise's lags are correlated, so the statistic's tail is
   // heavier than chi-square's: just over the point is not yet a shape (a
   // force sensor's gain error one way up is 1434 against 37.6).
-  auto whiteness_of = [&](const SetFit& f) {
-    const std::vector<std::vector<double>> noise = noise_through(fitter, noisier_fitter, replays, noisier, f);
-    return whiteness(replays, weighed_residual(f), all, &noise);
-  };
-  auto white_under = [&](const SetFit& f) {
-    const ResidualTest t = whiteness_of(f);
+  auto white_under = [&](const Scored& f) {
+    const ResidualTest& t = whiteness_of(f);
     return t.q <= kStructured * t.threshold;
   };
   auto effects_match = [&](const Scored& f) {
-    return !nominal_within && (within(f, 1.0) || (matched(f) && white_under(f.fit)));
+    return !nominal_within && (within(f, 1.0) || (matched(f) && white_under(f)));
   };
   // Each candidate is judged where it acts: an effect of the actee where
   // the jaws deflect it, the others over every sample.
@@ -617,7 +624,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     auto where = [&](const std::vector<double>& sq) { return contact ? in_contact_only(sq, judged_in_contact) : sq; };
     std::vector<EffectKind> others;
     for (const EffectFit& e : without.fit.effects) others.push_back(e.kind);
-    return matched(with) && white_under(with.fit) && !effects_match(without) &&
+    return matched(with) && white_under(with) && !effects_match(without) &&
            paired_t(where(with.sq), where(without.sq)) >= kSeparated && !adds_nothing_to(fitter, added, others);
   };
   Scored current_scored = nominal_scored;
@@ -722,7 +729,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // place (a late sensor, at the floor, with a progressive spring added
       // against an actee's law that had cut more in the contact alone).
       bool runner_up_explains = false;
-      if (good.size() > 1 && !effects_match(best.scored)) {
+      if (good.size() > 1 && !best_explains) {
         std::vector<const Tried*> explaining;
         for (const Tried* t : good) {
           if (earns(*t) && effects_match(t->scored)) explaining.push_back(t);
@@ -753,7 +760,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // residual white, its whiteness tested once: white is under twice
       // the point too.
       if (!nominal_within && (within(current_scored, 1.0) ||
-                              (matched(current_scored) && whiteness_of(current_scored.fit).white))) {
+                              (matched(current_scored) && whiteness_of(current_scored).white))) {
         break;
       }
     }
@@ -955,8 +962,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   d.shrink = was > 0 ? 1 - now / was : 0.0;
 
   const std::vector<std::vector<double>> after = weighed_residual(current);
-  const std::vector<std::vector<double>> noise_after = noise_through(fitter, noisier_fitter, replays, noisier, current);
-  d.residual = whiteness(replays, after, all, &noise_after);
+  d.residual = whiteness_of(current_scored);
   d.rig = m.rig;
   d.curves = held_out_curves(replays, fitter, nominal, fold_fitters, judged, chosen);
   what_it_follows(replays, after, &d.residual.follows, &d.residual.correlation);
@@ -993,7 +999,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // (report seeds 1,004,730, 1,004,742 and 1,004,956, ODE, were
   // `unexplained` when it was).
   const bool white_explains = d.residual.white && (matched(current_scored) || chosen.size() <= 2) &&
-                              current.rmse_test <= kMatched * kMatched * floor_of(current);
+                              current.rmse_test <= kMatched * kMatched * d.noise_through_model;
 
   // Samples the model predicts (free motion, a squeeze) are what anything
   // is judged on: a trace all reversals, rests and unresolved motion
