@@ -1,4 +1,5 @@
 #include "diagnose.h"
+#include "report.h"
 #include "sensor_gain.h"
 
 #include <algorithm>
@@ -293,6 +294,44 @@ std::string effects_text(const std::vector<EffectKind>& set) {
   std::string s;
   for (EffectKind k : set) s += (s.empty() ? "" : " + ") + std::string(manifest_of(k).name);
   return s.empty() ? "the nominal model" : s;
+}
+
+// Why a look-alike's fit is no explanation: an effect's value lies
+// outside its physical range by more than kSeparated of its standard
+// errors ("spring_preload would need force -11.48 N against the file's
+// 4 N, outside its physical range"); "" where every value may be.
+std::string out_of_range(const SetFit& fit, const Model& nominal) {
+  for (const EffectFit& e : fit.effects) {
+    const EffectParam& p = manifest_of(e.kind).params[0];
+    const ParameterChange c = parameter_change(e, 0, nominal);
+    if (in_physical_range(p, c.total, c.nominal, kSeparated * e.sigma[0])) continue;
+    return std::string(manifest_of(e.kind).name) + " would need " + p.key + " " + si_quantity(c.total, p) +
+           (c.has_nominal ? " against the file's " + si_quantity(c.nominal, p) : std::string()) +
+           ", outside its physical range" +
+           (p.keeps_sign && c.total * c.nominal < 0 ? " (a measured tool's keeps the file's sign)" : "");
+  }
+  return "";
+}
+
+// Effect `k`'s fitted change in `fit`, and whether it lies clear of zero
+// by kSeparated standard errors.
+struct FittedChange {
+  double change = 0, file = 0;  // SI
+  bool clear = false;
+};
+FittedChange change_of(const SetFit& fit, EffectKind k, const Model& nominal) {
+  for (const EffectFit& e : fit.effects) {
+    if (e.kind != k) continue;
+    const ParameterChange c = parameter_change(e, 0, nominal);
+    return {c.change, c.nominal, std::abs(c.change) > kSeparated * e.sigma[0]};
+  }
+  return {};
+}
+
+// Whether the effect's file value leaves it room to move by a small share
+// (a thousandth) of its change.
+bool room_towards(const EffectParam& p, const FittedChange& c) {
+  return in_physical_range(p, c.file + 1e-3 * c.change, c.file);
 }
 
 // Sets, one after another: "friction | damping + preload".
@@ -878,27 +917,54 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // look-alike of what was left out is no more named than any other.
   if (!chosen.empty()) {
     d.look_alikes = look_alikes(fitter, chosen, applicable);
-    if (!d.look_alikes.empty() && d.ambiguous.empty()) d.ambiguous.push_back(chosen);
     // Where one effect has one look-alike, the two at once fit as well as
     // either (their columns all but parallel): the data cannot tell a
     // weight from a preload one way up, nor from both. Listed only where
     // the two make a pair: beside a second chosen effect they would make
     // three, and where a pair explains the data do not ask for a third
     // (the smallest set that explains, above).
-    const bool both_too = d.look_alikes.size() == 1 && chosen.size() == 1;
-    for (const LookAlike& l : d.look_alikes) {
+    // Physics tells what the data cannot: in the chosen effect's place the
+    // look-alike must take its part within its physical range (one way up
+    // a weight reads as a preload only where the spring that pushes the
+    // tool open would pull it shut: development seed 6404, a press in
+    // ODE). Where its search stops at the range's edge (a delay at 0 s),
+    // it takes none. Where it alone leaves its range, both at once still
+    // split the part they share if its file value has room to move its way.
+    const bool one_and_one = d.look_alikes.size() == 1 && chosen.size() == 1;
+    for (LookAlike& l : d.look_alikes) {
       std::vector<EffectKind> set = chosen;
       std::replace(set.begin(), set.end(), l.chosen, l.alike);
-      if (std::find(d.ambiguous.begin(), d.ambiguous.end(), set) == d.ambiguous.end()) d.ambiguous.push_back(set);
+      const SetFit swapped = fitter.fit(set);
+      const EffectParam& p = manifest_of(l.alike).params[0];
+      const FittedChange alike = change_of(swapped, l.alike, model);
+      l.out_of_range = out_of_range(swapped, model);
+      if (l.out_of_range.empty() && !alike.clear) {
+        l.out_of_range = std::string(manifest_of(l.alike).name) + " would need " + p.key + " beyond its file's " +
+                         si_quantity(alike.file, p) + ", where its physical range ends";
+      }
+      const bool alone = l.out_of_range.empty();
+      const bool both_too = one_and_one && (alone || (alike.clear && room_towards(p, alike)));
+      std::snprintf(line, sizeof line, "  the data cannot tell %s from %s%s (their columns' cosine %.4f)",
+                    manifest_of(l.chosen).name, manifest_of(l.alike).name, both_too ? ", nor from both" : "",
+                    l.cosine);
+      if (alone) {
+        d.steps.push_back(line + std::string(": ") + l.separate);
+      } else {
+        d.steps.push_back(line + std::string(", but ") + l.out_of_range +
+                          (both_too ? std::string("; a share of it beside ") + manifest_of(l.chosen).name +
+                                          " may be: " + l.separate
+                                    : std::string()));
+        if (!both_too) continue;
+      }
+      if (d.ambiguous.empty()) d.ambiguous.push_back(chosen);
+      if (alone && std::find(d.ambiguous.begin(), d.ambiguous.end(), set) == d.ambiguous.end()) {
+        d.ambiguous.push_back(set);
+      }
       if (both_too) {
         std::vector<EffectKind> with = chosen;
         with.push_back(l.alike);
         d.ambiguous.push_back(with);
       }
-      std::snprintf(line, sizeof line, "  the data cannot tell %s from %s%s (their columns' cosine %.4f): ",
-                    manifest_of(l.chosen).name, manifest_of(l.alike).name, both_too ? ", nor from both" : "",
-                    l.cosine);
-      d.steps.push_back(line + l.separate);
       ambiguous = true;
     }
   }

@@ -83,6 +83,13 @@ double nominal_value(const Model& m, EffectKind k) {
 
 }  // namespace
 
+bool in_physical_range(const EffectParam& p, double value, double nominal, double margin) {
+  const double lower = p.keeps_sign && nominal > 0 ? std::max(p.min, 0.0) : p.min;
+  const double upper = p.keeps_sign && nominal < 0 ? std::min(p.max, 0.0) : p.max;
+  const bool lower_included = p.min_included || lower > p.min || margin > 0;
+  return (lower_included ? value >= lower - margin : value > lower) && value <= upper + margin;
+}
+
 double aicc(double rss, size_t n, int k) {
   const double nn = static_cast<double>(n);
   const double kk = k;
@@ -612,11 +619,11 @@ SetFit Fitter::fit(const std::vector<EffectKind>& set, const SetFit* near) const
   for (size_t c = 0; c < linear.size(); ++c) {
     EffectFit e;
     e.kind = linear[c];
-    e.value[0] = nominal_value(model_, linear[c]) + best_coef[c];
+    const double nominal = nominal_value(model_, linear[c]);
+    e.value[0] = nominal + best_coef[c];
     e.sigma[0] = best_sigma[c];
     out.effects.push_back(e);
-    const EffectParam& p = manifest_of(e.kind).params[0];
-    if (e.value[0] < p.min || (!p.min_included && e.value[0] <= p.min) || e.value[0] > p.max) out.valid = false;
+    if (!in_physical_range(manifest_of(e.kind).params[0], e.value[0], nominal)) out.valid = false;
   }
   if (compliance) {
     EffectFit e;

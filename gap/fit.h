@@ -27,6 +27,11 @@ struct EffectFit {
   double stiffness_factor_sigma = 0;
 };
 
+// Where a parameter's value may lie, the file's value `nominal` (its sign
+// is the part's kind where the parameter keeps it): the range widened by
+// `margin` each way (SI).
+bool in_physical_range(const EffectParam& p, double value, double nominal, double margin = 0);
+
 struct SetFit {
   std::vector<EffectFit> effects;
   double rss_train = 0;     // (N)^2, over the fitted samples of the training traces

@@ -26,7 +26,8 @@ std::string separating(EffectKind a, EffectKind b) {
   }
   if (is(EffectKind::viscous_damping, EffectKind::sensor_latency)) {
     return "a drive where the effort changes other than with the speed (a second speed with an arm whose inertia "
-           "shows, or the slope of an actee's contact): with a linear spring alone a late sensor reads as damping";
+           "shows, or the slope of an actee's contact): with a linear spring alone a late sensor reads as damping "
+           "of the other sign";
   }
   if (is(EffectKind::arm_inertia, EffectKind::sensor_latency)) return "a second speed or a drive with other corners";
   return "a drive that moves them differently (other angles, speeds or orientations)";
@@ -74,7 +75,7 @@ std::vector<LookAlike> look_alikes(const Fitter& fitter, const std::vector<Effec
       const Eigen::VectorXd b = without(c, others);
       const double norms = a.norm() * b.norm();
       const double cosine = norms > 0 ? std::abs(a.dot(b)) / norms : 0.0;
-      if (cosine >= kLookAlike) out.push_back({k, j, cosine, separating(k, j)});
+      if (cosine >= kLookAlike) out.push_back({k, j, cosine, separating(k, j), ""});
     }
   }
   return out;

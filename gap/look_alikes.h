@@ -18,6 +18,7 @@ struct LookAlike {
   EffectKind alike = EffectKind::pivot_friction;   // a candidate the data cannot tell from it
   double cosine = 0;                               // of their columns, 0..1
   std::string separate;                            // the measurement that would tell them apart
+  std::string out_of_range;  // where physics tells them apart: the value the look-alike would need ("" if none)
 };
 
 // Every candidate of `library` outside `chosen` whose column, and the

@@ -35,6 +35,10 @@ struct EffectParam {
   bool min_included;  // false: the value must be strictly above min
   double max;         // SI, largest value allowed (a sanity bound, inclusive)
   const char* doc;    // with its unit
+  // A measured tool's value may not cross zero from its file's: the sign
+  // is the part's kind (a spring that pushes the tool open cannot pull it
+  // shut). Where the file's value is zero, either sign.
+  bool keeps_sign;
 };
 
 struct EffectManifest {

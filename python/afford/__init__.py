@@ -252,7 +252,7 @@ def check(path: PathLike) -> Dict[str, Any]:
 def effects() -> List[Dict[str, Any]]:
     """The optional effects a file can switch on (`afford describe
     --effects`): each {"name", "home" (the kind of file), "doc", "params":
-    [{"key", "unit" (SI), "min", "min_included", "max", "range", "doc"}]}."""
+    [{"key", "unit" (SI), "min", "min_included", "max", "keeps_sign", "range", "doc"}]}."""
     return _afford.effects()
 
 

@@ -85,6 +85,7 @@ py::list effects() {
       d["min"] = p.min;
       d["min_included"] = p.min_included;
       d["max"] = p.max;
+      d["keeps_sign"] = p.keeps_sign;  // a measured tool's value keeps the file's sign
       d["range"] = std::string(p.min_included ? "from " : "above ") + format_quantity(p.min, p.dimension) + " to " +
                    format_quantity(p.max, p.dimension);
       d["doc"] = p.doc;
