@@ -233,16 +233,23 @@ TEST(GapDesigns, ClosingOnlyStrokesCannotTellFrictionFromAPreloadOrTheWeight) {
   EXPECT_THAT(report_text(d), ::testing::HasSubstr("open and close")) << report_text(d);
 }
 
+// Two 10 s traces of a 1 Hz sine from 8 to 28 deg, both with the tool
+// turned by `turned` (0 or pi, rad) from how its file holds it.
+Diagnosis one_way_up(const std::string& name, const Truth& truth, double turned) {
+  const auto drive = sine(8 * kDeg, 28 * kDeg, 1.0);
+  const std::string held = turned != 0 ? ", turned: 180 deg" : "";
+  return diagnose(load_measurement(measurement(name, {{"a.csv" + held, trace(truth, 1, 10, turned, drive)},
+                                                      {"b.csv" + held, trace(truth, 2, 10, turned, drive)}})
+                                       .string()));
+}
+
 TEST(GapDesigns, OneOrientationCannotTellTheWeightFromAPreload) {
   // 0.1 N*m of unmodelled weight, both traces with the tool upside down:
   // over 8 to 28 deg its torque's cosine changes by a tenth, and it opens
   // the tool, as 10 N more of the spring's 1.5 N preload would.
   Truth truth;
   truth.weight = 0.1;
-  const auto drive = sine(8 * kDeg, 28 * kDeg, 1.0);
-  const Diagnosis d = diagnose(load_measurement(measurement("level", {{"a.csv, turned: 180 deg", trace(truth, 1, 10, kPi, drive)},
-                                                                      {"b.csv, turned: 180 deg", trace(truth, 2, 10, kPi, drive)}})
-                                                    .string()));
+  const Diagnosis d = one_way_up("level", truth, kPi);
   EXPECT_EQ(d.verdict, Verdict::ambiguous) << report_text(d);
   EXPECT_TRUE(among_ambiguous(d, EffectKind::gravity)) << report_text(d);
   EXPECT_TRUE(among_ambiguous(d, EffectKind::spring_preload)) << report_text(d);
@@ -258,10 +265,7 @@ TEST(GapDesigns, AWeightAPreloadCouldMatchOnlyByPullingTheToolShutIsNoPreload) {
   // the weight may be.
   Truth truth;
   truth.weight = 0.1;
-  const auto drive = sine(8 * kDeg, 28 * kDeg, 1.0);
-  const Diagnosis d = diagnose(load_measurement(
-      measurement("pulling", {{"a.csv", trace(truth, 1, 10, 0, drive)}, {"b.csv", trace(truth, 2, 10, 0, drive)}})
-          .string()));
+  const Diagnosis d = one_way_up("pulling", truth, 0);
   EXPECT_EQ(d.verdict, Verdict::ambiguous) << report_text(d);
   EXPECT_TRUE(names(d, {EffectKind::gravity})) << report_text(d);
   EXPECT_FALSE(among_ambiguous(d, EffectKind::spring_preload)) << report_text(d);
@@ -284,10 +288,7 @@ TEST(GapDesigns, APairWithALookAlikeListsPairsNotThreeEffects) {
   Truth truth;
   truth.weight = 0.1;
   truth.friction = 0.08;
-  const auto drive = sine(8 * kDeg, 28 * kDeg, 1.0);
-  const Diagnosis d = diagnose(load_measurement(measurement("pair", {{"a.csv, turned: 180 deg", trace(truth, 1, 10, kPi, drive)},
-                                                                     {"b.csv, turned: 180 deg", trace(truth, 2, 10, kPi, drive)}})
-                                                    .string()));
+  const Diagnosis d = one_way_up("pair", truth, kPi);
   EXPECT_EQ(d.verdict, Verdict::ambiguous) << report_text(d);
   EXPECT_TRUE(among_ambiguous(d, {EffectKind::gravity, EffectKind::pivot_friction})) << report_text(d);
   EXPECT_TRUE(among_ambiguous(d, {EffectKind::spring_preload, EffectKind::pivot_friction})) << report_text(d);
