@@ -68,8 +68,9 @@ double minimise(F f, double lo, double hi, int steps) {
   return f(x, false) <= best_f ? x : best;
 }
 
-// The effect's current value in the nominal model (what a fitted change adds to).
-double nominal_value(const Model& m, EffectKind k) {
+}  // namespace
+
+double nominal_value(const Model& m, EffectKind k, size_t param) {
   switch (k) {
     case EffectKind::pivot_friction: return m.friction_torque;
     case EffectKind::viscous_damping: return m.damping;
@@ -77,11 +78,11 @@ double nominal_value(const Model& m, EffectKind k) {
     case EffectKind::progressive_spring: return m.spring_cubic;
     case EffectKind::arm_inertia: return m.arm_inertia;
     case EffectKind::gravity: return m.gravity_extra;
-    default: return 0;
+    case EffectKind::actee_compliance: return param == 0 ? m.actee_exponent : m.actee_reference;
+    case EffectKind::sensor_latency: return m.sensor_latency;
   }
+  return 0;
 }
-
-}  // namespace
 
 bool in_physical_range(const EffectParam& p, double value, double nominal, double margin) {
   const double lower = p.keeps_sign && nominal > 0 ? std::max(p.min, 0.0) : p.min;

@@ -27,6 +27,10 @@ struct EffectFit {
   double stiffness_factor_sigma = 0;
 };
 
+// Effect k's parameter `param` in the nominal model, SI: what a fitted
+// change adds to.
+double nominal_value(const Model& m, EffectKind k, size_t param = 0);
+
 // Where a parameter's value may lie, the file's value `nominal` (its sign
 // is the part's kind where the parameter keeps it): the range widened by
 // `margin` each way (SI).

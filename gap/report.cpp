@@ -41,24 +41,15 @@ Model nominal_model(const Measurement& m) {
 
 ParameterChange parameter_change(const EffectFit& fit, size_t i, const Model& nominal) {
   ParameterChange c;
-  switch (fit.kind) {
-    case EffectKind::pivot_friction: c.nominal = nominal.friction_torque; break;
-    case EffectKind::viscous_damping: c.nominal = nominal.damping; break;
-    case EffectKind::spring_preload: c.nominal = nominal.spring_preload; break;
-    case EffectKind::progressive_spring: c.nominal = nominal.spring_cubic; break;
-    case EffectKind::arm_inertia: c.nominal = nominal.arm_inertia; break;
-    case EffectKind::gravity: c.nominal = nominal.gravity_extra; break;
-    case EffectKind::actee_compliance:  // the fitted law replaces the actee's own: linear unless its file has one
-      c.nominal = i == 0 ? nominal.actee_exponent : nominal.actee_reference;
-      c.has_nominal = i == 0 || nominal.actee_reference > 0;
-      break;
-    case EffectKind::sensor_latency:
-      // The fit searches the delay on top of the measurement's own (the
-      // replay has delayed the nominal already): its value is the change.
-      c.nominal = nominal.sensor_latency;
-      c.change = fit.value[i];
-      c.total = c.nominal + c.change;
-      return c;
+  c.nominal = nominal_value(nominal, fit.kind, i);
+  // The fitted law replaces the actee's own: linear unless its file has one.
+  if (fit.kind == EffectKind::actee_compliance) c.has_nominal = i == 0 || nominal.actee_reference > 0;
+  if (fit.kind == EffectKind::sensor_latency) {
+    // The fit searches the delay on top of the measurement's own (the
+    // replay has delayed the nominal already): its value is the change.
+    c.change = fit.value[i];
+    c.total = c.nominal + c.change;
+    return c;
   }
   // Every other value is the total, the nominal included (fit.h).
   c.total = fit.value[i];
