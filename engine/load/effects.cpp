@@ -29,8 +29,8 @@ const std::vector<EffectManifest>& effect_registry() {
        "the spring's preload: a constant torque, the force the spring pushes with at the rest angle "
        "times its distance from the fulcrum (the spring section's `preload` key sets it)",
        {{"force", dim::force, -1e4, true, 1e4,
-         "the spring's push at the rest angle (negative: it pulls the tool closed), N; a "
-         "measured tool's keeps the file's sign (a spring that pushes cannot pull)", true}}},
+         "the spring's push at the rest angle (negative: it pulls the tool closed; a measured tool's keeps "
+         "the file's sign, as a spring that pushes cannot pull), N", true}}},
       {EffectKind::progressive_spring, "progressive_spring", EffectHome::object,
        "a stiffening spring: adds cubic * d^3 to the spring's force (d its compression)",
        {{"cubic", dim::cubic_stiffness, 0, true, 1e15, "cubic coefficient, N/m^3", false}}},
