@@ -1,5 +1,4 @@
 #include "diagnose.h"
-#include "report.h"
 #include "sensor_gain.h"
 
 #include <algorithm>
@@ -294,44 +293,6 @@ std::string effects_text(const std::vector<EffectKind>& set) {
   std::string s;
   for (EffectKind k : set) s += (s.empty() ? "" : " + ") + std::string(manifest_of(k).name);
   return s.empty() ? "the nominal model" : s;
-}
-
-// Why a look-alike's fit is no explanation: an effect's value lies
-// outside its physical range by more than kSeparated of its standard
-// errors ("spring_preload would need force -11.48 N against the file's
-// 4 N, outside its physical range"); "" where every value may be.
-std::string out_of_range(const SetFit& fit, const Model& nominal) {
-  for (const EffectFit& e : fit.effects) {
-    const EffectParam& p = manifest_of(e.kind).params[0];
-    const ParameterChange c = parameter_change(e, 0, nominal);
-    if (in_physical_range(p, c.total, c.nominal, kSeparated * e.sigma[0])) continue;
-    return std::string(manifest_of(e.kind).name) + " would need " + p.key + " " + si_quantity(c.total, p) +
-           (c.has_nominal ? " against the file's " + si_quantity(c.nominal, p) : std::string()) +
-           ", outside its physical range" +
-           (p.keeps_sign && c.total * c.nominal < 0 ? " (a measured tool's keeps the file's sign)" : "");
-  }
-  return "";
-}
-
-// Effect `k`'s fitted change in `fit`, and whether it lies clear of zero
-// by kSeparated standard errors.
-struct FittedChange {
-  double change = 0, file = 0;  // SI
-  bool clear = false;
-};
-FittedChange change_of(const SetFit& fit, EffectKind k, const Model& nominal) {
-  for (const EffectFit& e : fit.effects) {
-    if (e.kind != k) continue;
-    const ParameterChange c = parameter_change(e, 0, nominal);
-    return {c.change, c.nominal, std::abs(c.change) > kSeparated * e.sigma[0]};
-  }
-  return {};
-}
-
-// Whether the effect's file value leaves it room to move by a small share
-// (a thousandth) of its change.
-bool room_towards(const EffectParam& p, const FittedChange& c) {
-  return in_physical_range(p, c.file + 1e-3 * c.change, c.file);
 }
 
 // Sets, one after another: "friction | damping + preload".
@@ -934,30 +895,12 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     for (LookAlike& l : d.look_alikes) {
       std::vector<EffectKind> set = chosen;
       std::replace(set.begin(), set.end(), l.chosen, l.alike);
-      const SetFit swapped = fitter.fit(set);
-      const EffectParam& p = manifest_of(l.alike).params[0];
-      const FittedChange alike = change_of(swapped, l.alike, model);
-      l.out_of_range = out_of_range(swapped, model);
-      if (l.out_of_range.empty() && !alike.clear) {
-        l.out_of_range = std::string(manifest_of(l.alike).name) + " would need " + p.key + " beyond its file's " +
-                         si_quantity(alike.file, p) + ", where its physical range ends";
-      }
-      const bool alone = l.out_of_range.empty();
-      const bool both_too = one_and_one && (alone || (alike.clear && room_towards(p, alike)));
-      std::snprintf(line, sizeof line, "  the data cannot tell %s from %s%s (their columns' cosine %.4f)",
-                    manifest_of(l.chosen).name, manifest_of(l.alike).name, both_too ? ", nor from both" : "",
-                    l.cosine);
-      if (alone) {
-        d.steps.push_back(line + std::string(": ") + l.separate);
-      } else {
-        d.steps.push_back(line + std::string(", but ") + l.out_of_range +
-                          (both_too ? std::string("; a share of it beside ") + manifest_of(l.chosen).name +
-                                          " may be: " + l.separate
-                                    : std::string()));
-        if (!both_too) continue;
-      }
+      const Standing standing = standing_in(l, fitter.fit(set), model, kSeparated);
+      const bool both_too = one_and_one && standing.beside;
+      d.steps.push_back("  " + look_alike_text(l, both_too));
+      if (!standing.alone && !both_too) continue;
       if (d.ambiguous.empty()) d.ambiguous.push_back(chosen);
-      if (alone && std::find(d.ambiguous.begin(), d.ambiguous.end(), set) == d.ambiguous.end()) {
+      if (standing.alone && std::find(d.ambiguous.begin(), d.ambiguous.end(), set) == d.ambiguous.end()) {
         d.ambiguous.push_back(set);
       }
       if (both_too) {

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+
+#include "report.h"
 
 namespace afford {
 namespace {
@@ -97,6 +100,46 @@ bool adds_nothing_to(const Fitter& fitter, EffectKind k, const std::vector<Effec
   // The cosine between the column and its part in the others' span.
   const double off = without(a, basis).norm() / norm;
   return std::sqrt(std::max(0.0, 1 - off * off)) >= kLookAlike;
+}
+
+Standing standing_in(LookAlike& l, const SetFit& swapped, const Model& nominal, double sigmas) {
+  Standing out;
+  bool clear = false;  // the look-alike's change lies clear of zero
+  double change = 0, file = 0;  // SI
+  for (const EffectFit& e : swapped.effects) {
+    const EffectParam& p = manifest_of(e.kind).params[0];
+    const ParameterChange c = parameter_change(e, 0, nominal);
+    if (e.kind == l.alike) {
+      clear = std::abs(c.change) > sigmas * e.sigma[0];
+      change = c.change;
+      file = c.nominal;
+    }
+    if (l.out_of_range.empty() && !in_physical_range(p, c.total, c.nominal, sigmas * e.sigma[0])) {
+      l.out_of_range = std::string(manifest_of(e.kind).name) + " would need " + p.key + " " + si_quantity(c.total, p) +
+                       (c.has_nominal ? " against the file's " + si_quantity(c.nominal, p) : std::string()) +
+                       ", outside its physical range" +
+                       (p.keeps_sign && c.total * c.nominal < 0 ? " (a measured tool's keeps the file's sign)" : "");
+    }
+  }
+  const EffectParam& p = manifest_of(l.alike).params[0];
+  if (l.out_of_range.empty() && !clear) {
+    l.out_of_range = std::string(manifest_of(l.alike).name) + " would need " + p.key + " beyond its file's " +
+                     si_quantity(file, p) + ", where its physical range ends";
+  }
+  out.alone = l.out_of_range.empty();
+  // Room: a thousandth of its change (any small share) stays in range.
+  out.beside = out.alone || (clear && in_physical_range(p, file + 1e-3 * change, file));
+  return out;
+}
+
+std::string look_alike_text(const LookAlike& l, bool both) {
+  char head[160];
+  std::snprintf(head, sizeof head, "the data cannot tell %s from %s%s (cosine %.4f)", manifest_of(l.chosen).name,
+                manifest_of(l.alike).name, both ? ", nor from both" : "", l.cosine);
+  if (l.out_of_range.empty()) return head + std::string("; to tell them apart: ") + l.separate;
+  return head + std::string(", but ") + l.out_of_range +
+         (both ? std::string("; a share of it beside ") + manifest_of(l.chosen).name + " may be: " + l.separate
+               : std::string());
 }
 
 }  // namespace afford

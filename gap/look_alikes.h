@@ -34,4 +34,23 @@ std::vector<LookAlike> look_alikes(const Fitter& fitter, const std::vector<Effec
 // no column over every sample.
 bool adds_nothing_to(const Fitter& fitter, EffectKind k, const std::vector<EffectKind>& others);
 
+// Physics tells what the data cannot. `swapped` is the fit with the
+// look-alike in the chosen effect's place: it stands in alone only where
+// every value lies within its physical range by `sigmas` standard errors
+// and its own change lies clear of zero by as many (a search stopped at
+// its range's edge, a delay at 0 s, takes no part). Where it cannot, a
+// share of it beside the chosen effect still may where its file value has
+// room to move its way. Sets l.out_of_range to what it would need.
+struct Standing {
+  bool alone = true;   // it may stand in for the chosen effect
+  bool beside = true;  // a share of it beside the chosen effect may
+};
+Standing standing_in(LookAlike& l, const SetFit& swapped, const Model& nominal, double sigmas);
+
+// "the data cannot tell gravity from spring_preload[, nor from both]
+// (cosine 0.9997); to tell them apart: turn the tool ...", or where
+// physics rules the look-alike out, ", but spring_preload would need
+// ...": one line of the report and of the selection's steps.
+std::string look_alike_text(const LookAlike& l, bool both);
+
 }  // namespace afford

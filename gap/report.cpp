@@ -138,16 +138,7 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     const bool both = std::any_of(d.ambiguous.begin(), d.ambiguous.end(), [&](const std::vector<EffectKind>& set) {
       return std::count(set.begin(), set.end(), l.chosen) > 0 && std::count(set.begin(), set.end(), l.alike) > 0;
     });
-    std::snprintf(line, sizeof line, "  the data cannot tell %s from %s%s (cosine %.4f)", manifest_of(l.chosen).name,
-                  manifest_of(l.alike).name, both ? ", nor from both" : "", l.cosine);
-    if (l.out_of_range.empty()) {
-      out += line + std::string("; to tell them apart: ") + l.separate + "\n";
-    } else {
-      out += line + std::string(", but ") + l.out_of_range +
-             (both ? std::string("; a share of it beside ") + manifest_of(l.chosen).name + " may be: " + l.separate
-                   : std::string()) +
-             "\n";
-    }
+    out += "  " + look_alike_text(l, both) + "\n";
   }
   std::snprintf(line, sizeof line,
                 "residual: %s (Ljung-Box Q = %.1f, white below %.1f; structured share %.1f %%); it follows %s "
