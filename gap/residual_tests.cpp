@@ -34,10 +34,14 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
   return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
 }
 
-// Autocovariances at lags 0 to kLags within each trace's fitted stretches,
-// pooled, each trace's mean removed; `n` the samples.
+bool taken(const Replay& r, size_t s, Samples samples) {
+  return r.fitted[s] && (samples == Samples::every || !(r.deflection[s] > 0));
+}
+
+// Autocovariances at lags 0 to `lags` within each trace's stretches of
+// `samples`, pooled, each trace's mean removed; `n` the samples.
 std::vector<double> autocovariance(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& series,
-                                   const std::vector<size_t>& which, size_t* n, int lags = kLags) {
+                                   const std::vector<size_t>& which, Samples samples, size_t* n, int lags) {
   std::vector<double> ck(static_cast<size_t>(lags) + 1, 0.0);
   *n = 0;
   for (size_t i : which) {
@@ -46,7 +50,7 @@ std::vector<double> autocovariance(const std::vector<Replay>& replays, const std
     double mean = 0;
     size_t m = 0;
     for (size_t s = 0; s < e.size(); ++s) {
-      if (r.fitted[s]) {
+      if (taken(r, s, samples)) {
         mean += e[s];
         ++m;
       }
@@ -55,9 +59,9 @@ std::vector<double> autocovariance(const std::vector<Replay>& replays, const std
     mean /= static_cast<double>(m);
     *n += m;
     for (size_t s = 0; s < e.size(); ++s) {
-      if (!r.fitted[s]) continue;
+      if (!taken(r, s, samples)) continue;
       for (int k = 0; k <= lags && s + static_cast<size_t>(k) < e.size(); ++k) {
-        if (r.fitted[s + static_cast<size_t>(k)]) ck[static_cast<size_t>(k)] += (e[s] - mean) * (e[s + static_cast<size_t>(k)] - mean);
+        if (taken(r, s + static_cast<size_t>(k), samples)) ck[static_cast<size_t>(k)] += (e[s] - mean) * (e[s + static_cast<size_t>(k)] - mean);
       }
     }
   }
@@ -97,13 +101,14 @@ void what_it_follows(const std::vector<Replay>& replays, const std::vector<std::
 }
 
 ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& residual,
-                       const std::vector<size_t>& which, const std::vector<std::vector<double>>* noise) {
+                       const std::vector<size_t>& which, const std::vector<std::vector<double>>* noise,
+                       Samples samples) {
   size_t n = 0, n_noise = 0;  // the noise's count is the residual's: the same samples
-  const std::vector<double> ck = autocovariance(replays, residual, which, &n, kMemory);
+  const std::vector<double> ck = autocovariance(replays, residual, which, samples, &n, kMemory);
   // The angle's noise through the model is not white (the rates are
   // polynomial fits over a window): its own autocovariance, from the same
   // noise replayed again, is what noise alone would show.
-  const std::vector<double> expected = noise != nullptr ? autocovariance(replays, *noise, which, &n_noise, kMemory)
+  const std::vector<double> expected = noise != nullptr ? autocovariance(replays, *noise, which, samples, &n_noise, kMemory)
                                                         : std::vector<double>(kMemory + 1, 0.0);
   ResidualTest t;
   t.threshold = chi2_99(kLags);

@@ -21,15 +21,21 @@ struct ResidualTest {
   double correlation = 0;
 };
 
+// Which fitted samples a test of structure takes: every one, or only those
+// out of the actee's contact (where the tool's own effects are all there
+// is to misfit).
+enum class Samples { every, out_of_contact };
+
 // Over 20 lags, the residuals of the replays `which`, within their fitted
-// stretches. `noise`, where given: the noise the model's prediction
+// stretches (those of `samples`). `noise`, where given: the noise the model's prediction
 // carries by itself, sample by sample, whose autocovariance (scaled to the
 // residual's) is taken off the residual's, each lag's excess weighed by
 // Bartlett's variance for a noise of that colour (noise that is not white
 // is not structure). Without it, the residual is tested against white
 // noise (Box-Pierce). Sets q, threshold and white.
 ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& residual,
-                       const std::vector<size_t>& which, const std::vector<std::vector<double>>* noise = nullptr);
+                       const std::vector<size_t>& which, const std::vector<std::vector<double>>* noise = nullptr,
+                       Samples samples = Samples::every);
 
 // What a residual moves with most: direction, speed, acceleration, angle
 // (or displacement), over the fitted samples of the replays.

@@ -929,6 +929,27 @@ TEST(GapDesigns, ALateSensorCannotWinInASqueezeBySmoothingTheAnglesNoise) {
   EXPECT_GT(late.rmse_train, 0.99 * nominal.rmse_train) << late.delay;
 }
 
+// Two light squeezes (sines from 0.6 deg past the touch to `open` short of
+// it, 8 s each) of a nut whose force is its file's times (d / d_top)^e,
+// d_top the deepest squeeze, and a damping of `damping` N*m*s/rad the
+// file lacks.
+Diagnosis shade_of_misfit(double e, double damping = 0, double open = 3 * kDeg) {
+  const Jaws j = hazelnut_jaws();
+  Truth truth;
+  truth.angle_noise = 1e-4;
+  truth.effort_noise = 0.05;
+  const double top = j.a * 0.6 * kDeg;  // m, the deepest squeeze
+  const auto drive = sine(j.theta_c - 0.6 * kDeg, j.theta_c + open, 1.5);
+  const auto extra = [&](double, const Motion& m) {  // N*m over the file's law and tool
+    const double d = j.a * (j.theta_c - m.theta);
+    const double law = d > 0 ? j.a * 270e3 * d * j.h / (j.h - d) * (std::pow(d / top, e) - 1) : 0.0;
+    return law - damping * m.omega;
+  };
+  return diagnose(load_measurement(
+      squeeze_measurement("shade", {squeeze_trace(truth, j, 1, 8, drive, extra), squeeze_trace(truth, j, 2, 8, drive, extra)})
+          .string()));
+}
+
 TEST(GapDesigns, AShadeOfMisfitInALightSqueezeIsNoActeesLaw) {
   // No effect, but the nut's own law is not quite its file's: a light
   // squeeze (0.6 deg past the touch at most) of a nut whose force is its
@@ -941,28 +962,33 @@ TEST(GapDesigns, AShadeOfMisfitInALightSqueezeIsNoActeesLaw) {
   // explain (effect-free light squeezes of MuJoCo's and ODE's contacts,
   // 1.04 to 1.09 times the noise, read `explained: actee_compliance`). With
   // e = 0.1 (1.5 times the noise) it does, and the law is named.
-  const Jaws j = hazelnut_jaws();
-  Truth truth;
-  truth.angle_noise = 1e-4;
-  truth.effort_noise = 0.05;
-  const double top = j.a * 0.6 * kDeg;  // m, the deepest squeeze
-  const auto drive = sine(j.theta_c - 0.6 * kDeg, j.theta_c + 3 * kDeg, 1.5);
-  auto diagnosed = [&](double e) {
-    const auto misfit = [&](double, const Motion& m) {  // N*m over the file's law
-      const double d = j.a * (j.theta_c - m.theta);
-      if (d <= 0) return 0.0;
-      return j.a * 270e3 * d * j.h / (j.h - d) * (std::pow(d / top, e) - 1);
-    };
-    return diagnose(load_measurement(
-        squeeze_measurement("shade", {squeeze_trace(truth, j, 1, 8, drive, misfit), squeeze_trace(truth, j, 2, 8, drive, misfit)})
-            .string()));
-  };
-  const Diagnosis shade = diagnosed(0.02);
+  const Diagnosis shade = shade_of_misfit(0.02);
   ASSERT_GT(shade.contact_before, 1.05 * shade.noise) << report_text(shade);  // the design: a shade, plain in shape
   EXPECT_EQ(shade.verdict, Verdict::none) << report_text(shade);
-  const Diagnosis law = diagnosed(0.1);
+  const Diagnosis law = shade_of_misfit(0.1);
   EXPECT_EQ(law.verdict, Verdict::explained) << report_text(law);
   EXPECT_TRUE(names(law, {EffectKind::actee_compliance})) << report_text(law);
+}
+
+TEST(GapDesigns, AShadeOfMisfitInALightSqueezeIsNotLeftForTheToolsEffect) {
+  // The shade of the test above (e = 0.02, the contact 1.1 times the
+  // noise there), opening only 1.5 deg from the touch so that a third of
+  // the samples are in the contact, beside a damping of 0.5 N*m*s/rad the
+  // file lacks (some 5 times the noise at the sine's fastest). The damping
+  // is fitted to the truth, and what is left out of the contact is white;
+  // what is left in it, a plain shape over thousands of samples (the
+  // whole residual's Q 19 times the test's point, its share 5.8 %), is the
+  // shade, which no law of the actee is asked to explain within the
+  // noise's tolerance there. It is the law's, not a gap the damping
+  // leaves: `explained`, not `unexplained` (a damping fitted 0.1 % from
+  // the truth in a nutcracker's light squeeze, development seed 6807, ODE).
+  const Diagnosis d = shade_of_misfit(0.02, 0.5, 1.5 * kDeg);
+  ASSERT_GT(d.contact_after, 1.05 * d.noise) << report_text(d);  // the design: the shade is left in the contact
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  EXPECT_TRUE(names(d, {EffectKind::viscous_damping})) << report_text(d);
+  if (!d.effects.empty()) {
+    EXPECT_NEAR(d.effects[0].value[0], 0.5, 0.01) << report_text(d);
+  }
 }
 
 // The hazelnut squeezed along `motion` and read by a force sensor `late`
