@@ -1020,10 +1020,15 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // of them within the tolerance have explained the gap (a damping fitted
   // 0.1 % from the truth, white out of the contact, Q 7.6 times the
   // test's point in it, development seed 6807, ODE, `unexplained` before).
+  // Out of the contact there must be samples to judge, as anywhere.
+  size_t free_samples = 0;
+  for (const Replay& r : replays) {
+    for (size_t s = 0; s < r.t.size(); ++s) free_samples += r.fitted[s] && !(r.deflection[s] > 0) ? 1 : 0;
+  }
   bool shape_only_in_contact = false;
   ResidualTest out_of_contact;
-  if (contact_samples > 0 && !nominal_within && chosen.size() <= 2 && matched(current_scored) &&
-      !d.residual.white && current_scored.rmse_contact <= kMatched * d.noise) {
+  if (contact_samples > 0 && free_samples >= kMinBlock && !nominal_within && chosen.size() <= 2 &&
+      matched(current_scored) && !d.residual.white && current_scored.rmse_contact <= kMatched * d.noise) {
     const std::vector<std::vector<double>> noise = noise_through(fitter, noisier_fitter, replays, noisier, current);
     out_of_contact = whiteness(replays, after, all, &noise, Samples::out_of_contact);
     shape_only_in_contact = out_of_contact.q <= kStructured * out_of_contact.threshold;
