@@ -1026,11 +1026,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     for (size_t s = 0; s < r.t.size(); ++s) free_samples += r.fitted[s] && !(r.deflection[s] > 0) ? 1 : 0;
   }
   bool shape_only_in_contact = false;
-  ResidualTest out_of_contact;
+  const ResidualTest& out_of_contact = d.out_of_contact.test;
   if (contact_samples > 0 && free_samples >= kMinBlock && !nominal_within && chosen.size() <= 2 &&
       matched(current_scored) && !d.residual.white && current_scored.rmse_contact <= kMatched * d.noise) {
     const std::vector<std::vector<double>> noise = noise_through(fitter, noisier_fitter, replays, noisier, current);
-    out_of_contact = whiteness(replays, after, all, &noise, Samples::out_of_contact);
+    d.out_of_contact = {true, whiteness(replays, after, all, &noise, Samples::out_of_contact)};
     shape_only_in_contact = out_of_contact.q <= kStructured * out_of_contact.threshold;
   }
 

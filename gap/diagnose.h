@@ -81,6 +81,12 @@ struct Diagnosis {
   std::vector<PhaseShare> phases;
   std::string where;                               // one sentence
   ResidualTest residual;
+  // The residual out of the actee's contact, where it was asked whether a
+  // shape lies in the contact only (`computed` false where it was not).
+  struct OutOfContact {
+    bool computed = false;
+    ResidualTest test;
+  } out_of_contact;
   PerTrace per_trace;                              // with an unexplained verdict over several traces
   SpecimenShape specimens;                         // and there, when each trace alone wants the actee's power law
   std::vector<ForceGap> by_force_before, by_force_after;  // lever: replayed by force, nominal and fitted

@@ -294,7 +294,12 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
               {"threshold", num(d.residual.threshold)},
               {"structured_share", num(d.residual.share)},
               {"follows", d.residual.follows},
-              {"correlation", num(d.residual.correlation)}}}};
+              {"correlation", num(d.residual.correlation)},
+              {"out_of_contact", d.out_of_contact.computed
+                                     ? Json{{"ljung_box_q", num(d.out_of_contact.test.q)},
+                                            {"threshold", num(d.out_of_contact.test.threshold)},
+                                            {"structured_share", num(d.out_of_contact.test.share)}}
+                                     : Json(nullptr)}}}};
   if (d.per_trace.computed) {
     Json parameter = Json::array();
     for (double v : d.per_trace.first_parameter) parameter.push_back(num(v));

@@ -989,6 +989,14 @@ TEST(GapDesigns, AShadeOfMisfitInALightSqueezeIsNotLeftForTheToolsEffect) {
   if (!d.effects.empty()) {
     EXPECT_NEAR(d.effects[0].value[0], 0.5, 0.01) << report_text(d);
   }
+  // The report says why: the whole residual's shape, and out of the contact none.
+  EXPECT_GT(d.residual.q, 2 * d.residual.threshold) << report_text(d);
+  ASSERT_TRUE(d.out_of_contact.computed) << report_text(d);
+  EXPECT_LT(d.out_of_contact.test.q, 2 * d.out_of_contact.test.threshold) << report_text(d);
+  EXPECT_THAT(report_text(d), ::testing::HasSubstr("the residual's shape lies in the actee's contact"));
+  EXPECT_THAT(report_json(d), ::testing::HasSubstr("\"out_of_contact\":{\"ljung_box_q\":"));
+  // Where the question was not asked, the JSON says so.
+  EXPECT_THAT(report_json(shade_of_misfit(0.02)), ::testing::HasSubstr("\"out_of_contact\":null"));
 }
 
 // The hazelnut squeezed along `motion` and read by a force sensor `late`
