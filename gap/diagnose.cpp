@@ -1021,17 +1021,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // 0.1 % from the truth, white out of the contact, Q 7.6 times the
   // test's point in it, development seed 6807, ODE, `unexplained` before).
   // Out of the contact there must be samples to judge, as anywhere.
-  size_t free_samples = 0;
-  for (const Replay& r : replays) {
-    for (size_t s = 0; s < r.t.size(); ++s) free_samples += r.fitted[s] && !(r.deflection[s] > 0) ? 1 : 0;
-  }
   bool shape_only_in_contact = false;
-  const ResidualTest& out_of_contact = d.out_of_contact.test;
-  if (contact_samples > 0 && free_samples >= kMinBlock && !nominal_within && chosen.size() <= 2 &&
-      matched(current_scored) && !d.residual.white && current_scored.rmse_contact <= kMatched * d.noise) {
+  if (contact_samples > 0 && !nominal_within && chosen.size() <= 2 && matched(current_scored) &&
+      !d.residual.white && current_scored.rmse_contact <= kMatched * d.noise) {
     const std::vector<std::vector<double>> noise = noise_through(fitter, noisier_fitter, replays, noisier, current);
     d.out_of_contact = {true, whiteness(replays, after, all, &noise, Samples::out_of_contact)};
-    shape_only_in_contact = out_of_contact.q <= kStructured * out_of_contact.threshold;
+    const ResidualTest& t = d.out_of_contact.test;
+    shape_only_in_contact = t.samples >= kMinBlock && t.q <= kStructured * t.threshold;
   }
 
   // Samples the model predicts (free motion, a squeeze) are what anything
@@ -1097,7 +1093,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     std::snprintf(line, sizeof line,
                   "  the residual's shape lies in the actee's contact, %.3g times the sensor's noise there (no law of "
                   "the actee is asked to explain it); out of the contact Q = %.1f, under twice the point %.1f",
-                  d.contact_after / d.noise, out_of_contact.q, out_of_contact.threshold);
+                  d.contact_after / d.noise, d.out_of_contact.test.q, d.out_of_contact.test.threshold);
     d.steps.push_back(line);
   } else {
     d.verdict = Verdict::unexplained;

@@ -112,6 +112,7 @@ ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std
                                                         : std::vector<double>(kMemory + 1, 0.0);
   ResidualTest t;
   t.threshold = chi2_99(kLags);
+  t.samples = n;
   const double c0 = ck[0];
   if (n <= static_cast<size_t>(kMemory) || c0 <= 0) {
     t.white = true;

@@ -19,6 +19,7 @@ struct ResidualTest {
   double share = 0;      // the structured share of its variance: lags 1-20's excess correlation, root mean square
   std::string follows;   // the signal it correlates with most ("the direction of motion", ...)
   double correlation = 0;
+  size_t samples = 0;    // the samples tested
 };
 
 // Which fitted samples a test of structure takes: every one, or only those
@@ -32,7 +33,7 @@ enum class Samples { every, out_of_contact };
 // residual's) is taken off the residual's, each lag's excess weighed by
 // Bartlett's variance for a noise of that colour (noise that is not white
 // is not structure). Without it, the residual is tested against white
-// noise (Box-Pierce). Sets q, threshold and white.
+// noise (Box-Pierce). Sets q, threshold, white and samples.
 ResidualTest whiteness(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& residual,
                        const std::vector<size_t>& which, const std::vector<std::vector<double>>* noise = nullptr,
                        Samples samples = Samples::every);
