@@ -1080,6 +1080,10 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
              "measure longer, or more traces");
   } else if (chosen.empty() || gain_alike) {
     d.verdict = Verdict::unexplained;
+    // Where only the gain stood in the way, what is unexplained is which
+    // of the two, not a gap left.
+    d.gain_alike_explains =
+        gain_alike && (effects_match(current_scored) || white_explains || slight_shape || shape_only_in_contact);
   } else if (effects_match(current_scored) || white_explains) {
     d.verdict = ambiguous ? Verdict::ambiguous : Verdict::explained;
   } else if (slight_shape) {

@@ -66,6 +66,10 @@ struct Diagnosis {
   // gap as well as the effects fitted, which are then not named: the
   // relative error of its reading (+0.06: 6 % high); NaN when told apart.
   double gain_alike = std::numeric_limits<double>::quiet_NaN();
+  // With gain_alike: whether the effects fitted would have explained the
+  // gap (to the noise's tolerance, or white, ...) but for the gain. Then
+  // what is unexplained is which of the two, not what is left.
+  bool gain_alike_explains = false;
   double noise = 0;                                // N, the measurement's own noise, estimated
   double noise_through_model = 0;                  // N, with the motion's noise through the adopted model
   double rmse_before = 0, rmse_after = 0;          // N, on the held-out traces

@@ -93,7 +93,11 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
                   p.samples, 100 * p.before, 100 * p.after);
     out += line;
   }
-  if (!d.effects.empty()) out += d.verdict == Verdict::unexplained ? "effects fitted (not enough):\n" : "effects:\n";
+  if (!d.effects.empty()) {
+    if (d.verdict != Verdict::unexplained) out += "effects:\n";
+    else if (d.gain_alike_explains) out += "effects fitted (a force sensor's gain error does as well, below):\n";
+    else out += "effects fitted (not enough):\n";
+  }
   // Each parameter as its change over the nominal model's, the nominal and
   // the total: "torque +0.3 +- 0.002 N*m over the nominal 0.01 (0.31 in all)".
   for (const EffectFit& e : d.effects) {
@@ -146,7 +150,13 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
                 d.residual.white ? "white" : "structured", d.residual.q, d.residual.threshold, 100 * d.residual.share,
                 d.residual.follows.c_str(), d.residual.correlation);
   out += line;
-  if (d.verdict == Verdict::unexplained) {
+  if (d.verdict == Verdict::unexplained && d.gain_alike_explains) {
+    std::snprintf(line, sizeof line,
+                  "the effects above take the gap to the noise, and so does a force sensor reading %+.3g %% (a gain "
+                  "error, outside the library): the data cannot tell which, so none is named.\n",
+                  100 * d.gain_alike);
+    out += line;
+  } else if (d.verdict == Verdict::unexplained) {
     out += "nothing in the library explains what is left";
     out += d.effects.empty() ? ".\n" : " after the effects above.\n";
   }
@@ -350,6 +360,7 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
   j["events"] = events;
   j["by_force"] = by_force;
   j["gain_alike"] = std::isnan(d.gain_alike) ? nlohmann::json(nullptr) : nlohmann::json(d.gain_alike);
+  j["gain_alike_explains"] = d.gain_alike_explains;
   j["folds"] = d.folds;
   j["fold_sizes"] = nlohmann::json::array();
   for (const FoldSize& f : d.fold_sizes) j["fold_sizes"].push_back({{"blocks", f.blocks}, {"fitted", f.fitted}});
