@@ -1308,6 +1308,48 @@ TEST(GapDesigns, AHeavyArmCaughtAtEachStrokeAndALateSensorAreBothFound) {
   }
 }
 
+TEST(GapDesigns, ADampingReadByALateSensorIsFoundWithIt) {
+  // Closing-only strokes with 0.03 N*m*s/rad of damping the file lacks,
+  // read by a force sensor 50 ms late. Each recorded stroke starts with
+  // the arm held still at 28 deg for 0.1 s, the hand pressing 0.008 N*m
+  // into the file's friction (which it cannot know), then closes to 10
+  // deg in 1 s. The damping's torque, read late, is -c omega(t - tau).
+  // The delay that decides which late readings are left out, fitted
+  // with friction and an inertia beside it, comes out at 0 here (the
+  // damping pulls it there: on a spring a late sensor reads as a negative
+  // damping). Fitted again with a damping beside it, 24 ms does not earn
+  // its place beside the damping, and it stays at 0. On development seeds
+  // 6293 (both engines) and 6678 the readings left in at 0 kept the pair
+  // from the floor; on these formulas they cost little and the pair is
+  // found either way: this guards the pair, 6293's trace
+  // (tests/data/gap/snips-spring-late-sensor) tells the two apart.
+  Truth truth;
+  truth.angle_noise = 1e-4;
+  constexpr double kLate = 0.050, kDamping = 0.03;  // s; N*m*s/rad
+  const double period = 1.4, hold = 0.1, closing = 1.0;  // s
+  auto strokes = [=](double t) {
+    const double u = std::fmod(t, period) - hold, w = kPi / closing;
+    if (u < 0) return Motion{28 * kDeg, 0, 0};
+    const double v = std::min(u, closing);
+    return Motion{19 * kDeg + 9 * kDeg * std::cos(w * v), -9 * kDeg * w * std::sin(w * v), -9 * kDeg * w * w * std::cos(w * v)};
+  };
+  auto late = [&](double t, const Motion& now) {
+    const Motion then = strokes(std::max(0.0, t - kLate));
+    const double held = then.omega == 0 ? 0.008 : 0.0;  // N*m
+    return torque(truth, then.theta, then.omega, then.alpha, 0) + held - kDamping * then.omega -
+           torque(truth, now.theta, now.omega, now.alpha, 0);
+  };
+  const Diagnosis d = diagnose(load_measurement(
+      measurement("late-damping", {{"a.csv", recorded_strokes(trace(truth, 7, 9, 0, strokes, late), period, hold + closing)}})
+          .string()));
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  EXPECT_TRUE(names(d, {EffectKind::viscous_damping, EffectKind::sensor_latency})) << report_text(d);
+  for (const EffectFit& e : d.effects) {
+    const double expected = e.kind == EffectKind::sensor_latency ? kLate : kDamping;  // s; N*m*s/rad
+    EXPECT_NEAR(e.value[0], expected, 0.1 * expected) << report_text(d);
+  }
+}
+
 TEST(GapDesigns, AnActeesLawOneTraceAloneSqueezesIsJudgedOnFoldsThatHoldItsContact) {
   // Three traces: the first squeezes the hazelnut (0.7 deg past its touch),
   // the others open and close clear of it. The real nut's law is a power
