@@ -427,14 +427,17 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     if (asked(EffectKind::pivot_friction)) late_with.push_back(EffectKind::pivot_friction);
     if (asked(EffectKind::arm_inertia)) late_with.push_back(EffectKind::arm_inertia);
     const std::vector<Replay> as_replayed = whole;
-    auto settle = [&](const std::vector<EffectKind>& with) {
+    // The last fit, where it was made on the readings `delay` leaves in
+    // (the delay held); none where five fits did not settle it.
+    auto settle = [&](const std::vector<EffectKind>& with) -> std::optional<SetFit> {
       for (int round = 0; round < kLateRounds; ++round) {
-        const double found = Fitter(model, whole, every, {}).fit(with).delay;
-        if (round > 0 && std::abs(found - delay) < kLateSettled) break;
-        delay = found;
+        SetFit found = Fitter(model, whole, every, {}).fit(with);
+        if (round > 0 && std::abs(found.delay - delay) < kLateSettled) return found;
+        delay = found.delay;
         whole = as_replayed;
         leave_out_late_readings(whole, delay);
       }
+      return std::nullopt;
     };
     settle(late_with);
     if (delay < kLateSettled && asked(EffectKind::viscous_damping)) {
@@ -442,9 +445,9 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       std::vector<EffectKind> damped(late_with.begin() + 1, late_with.end());
       damped.push_back(EffectKind::viscous_damping);
       late_with.push_back(EffectKind::viscous_damping);
-      settle(late_with);
+      const std::optional<SetFit> held = settle(late_with);
       const Fitter left_in(model, whole, every, {});
-      const SetFit late = left_in.fit(late_with), not_late = left_in.fit(damped);
+      const SetFit late = held ? *held : left_in.fit(late_with), not_late = left_in.fit(damped);
       if (late.aicc > not_late.aicc - kAiccMargin || late.rmse_train > (1 - kRealMargin) * not_late.rmse_train) {
         delay = at_end;
         whole = as_replayed;
