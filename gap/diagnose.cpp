@@ -408,14 +408,15 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // inertia's torque there was taken up by the delay, which then left
     // in the readings of the catch (development seed 3085: the true
     // inertia and 50 ms latency left 1.24 times the floor).
-    // A delay at the search's end, 0, says nothing of the delay and
-    // leaves no reading out; it is fitted again with a damping beside it.
-    // On a spring a late sensor reads as a negative damping (tau k s^2
-    // omega over the effort), so an effect the fit lacks can pull it to 0:
-    // a real damping, or a progressive spring (development seeds 6678 in
-    // ODE and 6293 in both engines, each with a 50 ms sensor: the readings
-    // after each turn left in kept the true pair from the floor; fitted
-    // again, 42 and 62 ms). Only there: beside every fit the damping trades
+    // A delay at the search's end, 0 (within the half sample a delay is
+    // settled to), says nothing of the delay and leaves no reading out;
+    // it is fitted again with a damping beside it. On a spring a late
+    // sensor reads as a negative damping (tau k s^2 omega over the
+    // effort), so an effect the fit lacks can pull it to 0. It came out
+    // at 0 under a real damping and under a progressive spring
+    // (development seeds 6678 in ODE and 6293 in both engines, each with
+    // a 50 ms sensor: the readings after each turn left in kept the true
+    // pair from the floor; fitted again, 42 and 62 ms). Only there: beside every fit the damping trades
     // with the delay where the sensor is not late (64 and 52 ms for none,
     // development seeds 6148 and 6442) and takes some of it where it is
     // (14 ms for 50, 6371). And the delay found so must earn its place
