@@ -98,6 +98,24 @@ const EffectFit* find(const Diagnosis& d, EffectKind k) {
   return nullptr;
 }
 
+// An effect a verdict must name, its first parameter and how near it must come.
+struct Named {
+  EffectKind kind;
+  double value;
+  double tolerance;
+};
+
+// `explained` with exactly `truth`, each sized within its tolerance.
+void expect_explained_by(const Diagnosis& d, const std::vector<Named>& truth) {
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  ASSERT_EQ(d.effects.size(), truth.size()) << report_text(d);
+  for (const Named& n : truth) {
+    const EffectFit* e = find(d, n.kind);
+    ASSERT_NE(e, nullptr) << report_text(d);
+    EXPECT_NEAR(e->value[0], n.value, n.tolerance) << report_text(d);
+  }
+}
+
 TEST(Gap, AnEffectFreeMeasurementIsNone) {
   const Diagnosis d = diagnose(load_measurement(lever_measurement("none", {}).string()));
   EXPECT_EQ(d.verdict, Verdict::none) << report_text(d);
@@ -1140,14 +1158,8 @@ TEST(Gap, AProgressiveSpringReadByALateSensorIsFoundWithTheDelayFittedBesideADam
   // the pair is fitted to the floor.
   const Diagnosis d =
       diagnose(load_measurement(kSource + "/tests/data/gap/snips-spring-late-sensor/measurement.yaml"));
-  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
-  ASSERT_EQ(d.effects.size(), 2u) << report_text(d);
-  const EffectFit* cubic = find(d, EffectKind::progressive_spring);
-  const EffectFit* late = find(d, EffectKind::sensor_latency);
-  ASSERT_NE(cubic, nullptr) << report_text(d);
-  ASSERT_NE(late, nullptr) << report_text(d);
-  EXPECT_NEAR(cubic->value[0], 7.347e4, 0.05 * 7.347e4) << report_text(d);
-  EXPECT_NEAR(late->value[0], 0.050, 0.002) << report_text(d);
+  expect_explained_by(d, {{EffectKind::progressive_spring, 7.347e4, 0.05 * 7.347e4},  // N/m^3
+                          {EffectKind::sensor_latency, 0.050, 0.002}});                 // s
 }
 
 TEST(Gap, AWeightReadByALateSensorIsFoundWhereTheFirstDelayIsUnderOneSample) {
@@ -1160,14 +1172,8 @@ TEST(Gap, AWeightReadByALateSensorIsFoundWhereTheFirstDelayIsUnderOneSample) {
   // over the noise (2.1 %); the pair is then fitted to the floor.
   const Diagnosis d =
       diagnose(load_measurement(kSource + "/tests/data/gap/snips-weight-late-sensor/measurement.yaml"));
-  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
-  ASSERT_EQ(d.effects.size(), 2u) << report_text(d);
-  const EffectFit* weight = find(d, EffectKind::gravity);
-  const EffectFit* late = find(d, EffectKind::sensor_latency);
-  ASSERT_NE(weight, nullptr) << report_text(d);
-  ASSERT_NE(late, nullptr) << report_text(d);
-  EXPECT_NEAR(weight->value[0], 0.07709, 0.05 * 0.07709) << report_text(d);  // N*m
-  EXPECT_NEAR(late->value[0], 0.050, 0.002) << report_text(d);
+  expect_explained_by(d, {{EffectKind::gravity, 0.07709, 0.05 * 0.07709},  // N*m
+                          {EffectKind::sensor_latency, 0.050, 0.002}});       // s
 }
 
 TEST(Gap, AThirdEffectThatLeavesTheHeldOutSamplesOverTheNoiseHasNotExplainedTheGap) {
