@@ -446,7 +446,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       return std::nullopt;
     };
     settle(late_with);
-    double shortest_step = kLongestDelay;  // s, the traces' sampling
+    double shortest_step = std::numeric_limits<double>::infinity();  // s, the traces' sampling
     for (const Replay& r : as_replayed) shortest_step = std::min(shortest_step, r.step);
     if (delay < shortest_step && asked(EffectKind::viscous_damping)) {
       const double at_end = delay;
