@@ -447,7 +447,9 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     };
     settle(late_with);
     double shortest_step = std::numeric_limits<double>::infinity();  // s, the traces' sampling
-    for (const Replay& r : as_replayed) shortest_step = std::min(shortest_step, r.step);
+    for (const Replay& r : as_replayed) {
+      if (r.step > 0) shortest_step = std::min(shortest_step, r.step);  // a one-sample trace has none
+    }
     if (delay < shortest_step && asked(EffectKind::viscous_damping)) {
       const double at_end = delay;
       std::vector<EffectKind> damped(late_with.begin() + 1, late_with.end());
