@@ -13,7 +13,8 @@
 // recorded apart, and caught at each with a late sensor, an actee's law one trace
 // alone squeezes, quick strokes onto a stiff actee (its kink at the touch
 // is the angle's, through its law), a squeeze read by an encoder whose
-// counts are coarser than its digits. Every trace is written by the
+// counts are coarser than its digits, a trace held still beside strokes.
+// Every trace is written by the
 // formulas here (moment balance of the shipped nutcracker: 2000 N/m at
 // 10 mm, 1.5 N preload, 0.01 N*m of friction, rest 30 deg, measured at
 // 160 mm), not by the solver.
@@ -307,6 +308,24 @@ TEST(GapDesigns, ANoiseFreeTraceWithFrictionIsExplained) {
   EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
   EXPECT_TRUE(names(d, {EffectKind::pivot_friction})) << report_text(d);
   EXPECT_GT(d.noise, 1e-7) << report_text(d);  // 1e-6 / sqrt(12), not 1e-16
+}
+
+TEST(GapDesigns, ATraceWithNothingFittedIsNoFold) {
+  // A trace held still throughout (at rest friction takes any value: no
+  // sample is fitted) beside one of strokes with 0.08 N*m of friction the
+  // file lacks. The still trace is no block: a fold of it would judge
+  // nothing, and the fold without it would be fitted to nothing where the
+  // strokes are one block.
+  Truth truth;
+  truth.friction = 0.08;
+  const auto still = [](double) { return Motion{20 * kDeg, 0, 0}; };
+  const Diagnosis d = diagnose(load_measurement(
+      measurement("still", {{"held.csv", trace(truth, 1, 4, 0, still)},
+                            {"strokes.csv", trace(truth, 2, 8, 0, sine(8 * kDeg, 28 * kDeg, 1.0))}})
+          .string()));
+  for (const FoldSize& f : d.fold_sizes) EXPECT_GT(f.fitted, 0u) << report_text(d);
+  EXPECT_EQ(d.verdict, Verdict::explained) << report_text(d);
+  EXPECT_TRUE(names(d, {EffectKind::pivot_friction})) << report_text(d);
 }
 
 // Ramps of 10 deg, in 0.2 s and in 0.5 s by turns, each from and to a
