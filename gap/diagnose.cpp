@@ -187,10 +187,11 @@ std::vector<Block> blocks_of(const std::vector<Replay>& replays) {
   }
   std::vector<Block> out;
   for (size_t i = 0; i < replays.size(); ++i) {
-    // A trace with nothing fitted (all of it the snap after a crack) is
-    // no block: a fold of it judges nothing, and the fold that leaves the
-    // others out has nothing to fit (development seed 7130, ODE: judged
-    // "over 2 folds (fitted samples: 0 228)", every fit invalid).
+    // A trace with nothing fitted (all of it the snap after a crack, or
+    // held still) is no block: a fold of it judges nothing, and the fold
+    // that leaves the others out has nothing to fit (development seed
+    // 7130, ODE: judged "over 2 folds (fitted samples: 0 228)", every fit
+    // invalid).
     if (fitted[i] == 0 && fitted_all > 0) continue;
     const Replay& r = replays[i];
     const double own = owns[i];
