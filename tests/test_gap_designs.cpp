@@ -314,8 +314,8 @@ TEST(GapDesigns, ATraceWithNothingFittedIsNoFold) {
   // A trace held still throughout (at rest friction takes any value: no
   // sample is fitted) beside one of strokes with 0.08 N*m of friction the
   // file lacks. The still trace is no block: a fold of it would judge
-  // nothing, and the fold without it would be fitted to nothing where the
-  // strokes are one block.
+  // nothing (and where the other trace is one block, as in development
+  // seed 7130, the fold without it would be fitted to nothing).
   Truth truth;
   truth.friction = 0.08;
   const auto still = [](double) { return Motion{20 * kDeg, 0, 0}; };
