@@ -1042,6 +1042,14 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   d.rig = m.rig;
   d.curves = held_out_curves(replays, fitter, nominal, fold_fitters, judged, chosen);
   what_it_follows(replays, after, &d.residual.follows, &d.residual.correlation);
+  if (m.rig == Rig::lever) {
+    std::vector<std::vector<double>> left_over;  // N*m
+    for (size_t i = 0; i < replays.size(); ++i) {
+      left_over.push_back(fitter.residual(current, i, true));
+      for (double& e : left_over.back()) e /= replays[i].to_newtons;
+    }
+    d.turns = turn_impulse(replays, left_over);
+  }
 
   // Where the nominal model was off, one effect or two within the noise's
   // tolerance whose residual keeps a slight shape have explained the gap:

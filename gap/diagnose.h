@@ -15,6 +15,7 @@
 #include "replay.h"
 #include "residual_tests.h"
 #include "specimens.h"
+#include "turn_impulse.h"
 
 namespace afford {
 
@@ -91,6 +92,9 @@ struct Diagnosis {
     bool computed = false;
     ResidualTest test;
   } out_of_contact;
+  // Lever: what the turns, left out of every fit, say of an arm's inertia
+  // beyond the adopted model's (reported, not judged: turn_impulse.h).
+  TurnImpulse turns;
   PerTrace per_trace;                              // with an unexplained verdict over several traces
   SpecimenShape specimens;                         // and there, when each trace alone wants the actee's power law
   std::vector<ForceGap> by_force_before, by_force_after;  // lever: replayed by force, nominal and fitted

@@ -714,14 +714,14 @@ double Fitter::shared_exponent(const std::vector<size_t>& on, bool own_zeros) co
       kMinExponent, kMaxExponent, 35);
 }
 
-std::vector<double> Fitter::residual(const SetFit& fit, size_t i) const {
+std::vector<double> Fitter::residual(const SetFit& fit, size_t i, bool every_sample) const {
   std::vector<double> base;
   std::vector<std::vector<double>> cols;
   columns(i, fit.linear, Nonlinear{fit.delay, fit.exponent, fit.compression_shift}, &base, &cols);
   const Replay& r = replays_[i];
   std::vector<double> out(base.size(), 0.0);
   for (size_t s = 0; s < base.size(); ++s) {
-    if (!r.fitted[s]) continue;
+    if (!r.fitted[s] && !every_sample) continue;
     double p = base[s];
     for (size_t c = 0; c < cols.size(); ++c) p += fit.coef[c] * cols[c][s];
     out[s] = r.measured[s] * r.to_newtons - p;

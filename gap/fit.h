@@ -89,8 +89,9 @@ class Fitter {
   SetFit fit(const std::vector<EffectKind>& set, const SetFit* near = nullptr) const;
 
   // The residual (measured - predicted, N) of every sample of replay i
-  // under a fit; samples outside the fit (at a limit, after a break) are 0.
-  std::vector<double> residual(const SetFit& fit, size_t i) const;
+  // under a fit; samples outside the fit (at a limit, after a break) are 0,
+  // unless `every_sample` (turn_impulse.h looks across the unfitted).
+  std::vector<double> residual(const SetFit& fit, size_t i, bool every_sample = false) const;
 
   // The candidates that apply to this rig.
   std::vector<EffectKind> candidates() const;
