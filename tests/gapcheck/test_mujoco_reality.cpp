@@ -98,9 +98,9 @@ TEST(GapcheckMujocoReality, AnEffectOfTheLibraryShowsInTheEffortAtTwiceTheNoise)
 
 // Each effect of the tool is promised at twice the noise as it shows
 // played alone at the size drawn, not as a line through a first play at
-// another size predicts. An arm's inertia is not linear in that way: the
-// first play's (the torque over the drive's acceleration, many times the
-// bound) turns the hand's servo about. Before, development seed 6098 drew
+// another size predicts. An arm's inertia is not linear in that way:
+// played first at the torque over the drive's acceleration, many times the
+// bound, it turns the hand's servo about. Before, development seed 6098 drew
 // a snips' inertia at the bound that the line promised at 2.22 times the
 // noise and that showed 1.86 times.
 TEST(GapcheckMujocoReality, EachEffectShowsAtTwiceTheNoiseAtTheSizeItIsDrawn) {
