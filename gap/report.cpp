@@ -160,12 +160,12 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     out += "nothing in the library explains what is left";
     out += d.effects.empty() ? ".\n" : " after the effects above.\n";
   }
-  if (d.turns.turns >= 3) {
+  if (d.turns.stretches >= 3) {
     std::snprintf(line, sizeof line,
-                  "the turns (%zu, left out of every fit: friction turns over there): the torque left over across each, "
-                  "against its change of speed, is an arm inertia of %+.3g +- %.2g kg*m^2 beyond the model's "
-                  "(reported, not judged)\n",
-                  d.turns.turns, d.turns.inertia, d.turns.sigma);
+                  "the turns (left out of every fit: friction turns over there), in %zu stretches of motion: the torque "
+                  "left over across each, against its change of speed, is an arm inertia of %+.3g +- %.2g kg*m^2 beyond "
+                  "the model's (reported, not judged)\n",
+                  d.turns.stretches, d.turns.inertia, d.turns.sigma);
     out += line;
   }
   if (d.per_trace.computed) {
@@ -318,8 +318,8 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
                                             {"threshold", num(d.out_of_contact.test.threshold)},
                                             {"structured_share", num(d.out_of_contact.test.share)}}
                                      : Json(nullptr)}}}};
-  if (d.turns.turns >= 3) {
-    j["turns"] = {{"count", d.turns.turns},
+  if (d.turns.stretches >= 3) {
+    j["turns"] = {{"stretches", d.turns.stretches},
                   {"arm_inertia", {{"value", num(d.turns.inertia)}, {"unit", "kg*m^2"}, {"uncertainty", num(d.turns.sigma)}}}};
   }
   if (d.per_trace.computed) {

@@ -381,6 +381,31 @@ TEST(GapDesigns, ALateSensorAfterRestsAndReversalsIsNamed) {
   for (const EffectFit& e : d.effects) EXPECT_NEAR(e.value[0], kLate, 0.003) << report_text(d);
 }
 
+TEST(GapDesigns, StrokesThatHoldBetweenTurnsAskForNoInertia) {
+  // The ramps, each from and to a rest of 0.4 s, the hand keeping at rest
+  // the file's friction of the stroke before (it stops pushing no further
+  // than needed), read with 2e-4 rad of angle noise. At rest the model's
+  // friction follows the rate's noisy sign while the real one holds the
+  // old side: taken whole, a turn with a hold inside asked for an inertia
+  // the tool does not have (here -0.0070 +- 0.0002 kg*m^2; development
+  // seed 7446, ODE: 0.00066). Each stretch in motion, taken on its own,
+  // asks for none beyond its noise (-0.0002 +- 0.00025).
+  Truth truth;
+  truth.angle_noise = 2e-4;
+  double last = 0;
+  auto motion = [&](double t) { return ramps(t, &last); };
+  auto held = [&](double t, const Motion& now) {
+    double direction = 0;
+    ramps(t, &direction);
+    return now.omega == 0 ? -0.01 * direction : 0.0;  // N*m, friction kept at rest
+  };
+  const Diagnosis d =
+      diagnose(load_measurement(measurement("holds", {{"a.csv", trace(truth, 53, 10, 0, motion, held)}}).string()));
+  ASSERT_GE(d.turns.stretches, 10U) << report_text(d);
+  EXPECT_LT(std::abs(d.turns.inertia), 3 * d.turns.sigma) << report_text(d);
+  EXPECT_LT(std::abs(d.turns.inertia), 0.001) << report_text(d);
+}
+
 TEST(GapDesigns, ALateSensorAndAFrictionTheFileLacksAreBothFound) {
   // 0.03 N*m of friction beyond the file's 0.01, read by a force sensor
   // 50 ms late, on sines of two periods. The sensor reads each flip of
@@ -607,12 +632,12 @@ TEST(GapDesigns, TheTurnsTellAnInertiaTheEvenStrokesBetweenThemHide) {
   const auto drive = even_strokes(8 * kDeg, 28 * kDeg, 0.5, 0.04);
   const Diagnosis d = diagnose(
       load_measurement(measurement("turns", {{"a.csv", trace(truth, 51, 10, 0, drive)}}).string()));
-  EXPECT_GE(d.turns.turns, 10U) << report_text(d);
+  EXPECT_GE(d.turns.stretches, 10U) << report_text(d);
   EXPECT_NEAR(d.turns.inertia, 0.002, 0.0002) << report_text(d);
   EXPECT_LT(d.turns.sigma, 0.0002) << report_text(d);
-  EXPECT_THAT(report_text(d), testing::ContainsRegex("the turns \\(1[0-9], left out of every fit.*is an arm inertia of "
-                                                     "\\+0\\.00(19|20)"));
-  EXPECT_THAT(report_json(d), testing::ContainsRegex("\"turns\":\\{\"count\":1[0-9],\"arm_inertia\":\\{\"value\":0\\.00"));
+  EXPECT_THAT(report_text(d), testing::ContainsRegex("the turns \\(left out of every fit.*in [0-9]+ stretches of "
+                                                     "motion.*is an arm inertia of \\+0\\.00(19|20)"));
+  EXPECT_THAT(report_json(d), testing::ContainsRegex("\"turns\":\\{\"stretches\":[0-9]+,\"arm_inertia\":\\{\"value\":0\\.00"));
 }
 
 TEST(GapDesigns, TheTurnsOfAToolAsItsFileSaysAskForNoInertia) {
@@ -621,7 +646,7 @@ TEST(GapDesigns, TheTurnsOfAToolAsItsFileSaysAskForNoInertia) {
   const auto drive = even_strokes(8 * kDeg, 28 * kDeg, 0.5, 0.04);
   const Diagnosis d = diagnose(
       load_measurement(measurement("turns-none", {{"a.csv", trace(Truth{}, 52, 10, 0, drive)}}).string()));
-  EXPECT_GE(d.turns.turns, 10U) << report_text(d);
+  EXPECT_GE(d.turns.stretches, 10U) << report_text(d);
   EXPECT_LT(std::abs(d.turns.inertia), 0.0001) << report_text(d);
   EXPECT_LT(std::abs(d.turns.inertia), 4 * d.turns.sigma + 2e-5) << report_text(d);
 }
