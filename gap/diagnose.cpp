@@ -1042,6 +1042,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   d.rig = m.rig;
   d.curves = held_out_curves(replays, fitter, nominal, fold_fitters, judged, chosen);
   what_it_follows(replays, after, &d.residual.follows, &d.residual.correlation);
+  // What the turns, left out of every fit, say of an arm's inertia beyond
+  // the adopted set's: reported, never read by the verdict below.
   if (m.rig == Rig::lever) {
     std::vector<std::vector<double>> left_over;  // N*m
     for (size_t i = 0; i < replays.size(); ++i) {

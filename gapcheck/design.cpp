@@ -777,9 +777,9 @@ Case draw_case(const fs::path& source, const fs::path& cases_dir, unsigned seed,
       // acceleration (0.12 kg*m^2, 60 times the bound) turns the hand's
       // servo about, and scaled back to the bound it showed 0.040 N, 1.3
       // times the noise, where the line promised 2.4 times (development
-      // seed 7526, ODE). Scaled again on what it showed
-      // until it lies within kSizedWithin of its size, then promised at
-      // twice the floor as played.
+      // seed 7526, ODE). Scaled again on what it showed until it lies
+      // within kSizedWithin of its size, then promised at twice the floor
+      // as played.
       const double goal = size * noise;  // N
       Truth sized;
       double shown = played;  // N
