@@ -93,7 +93,7 @@ struct Diagnosis {
     ResidualTest test;
   } out_of_contact;
   // Lever: what the turns, left out of every fit, say of an arm's inertia
-  // beyond the adopted model's (reported, not judged: turn_impulse.h).
+  // beyond the adopted model's (turn_impulse.h), named where the fits saw none.
   TurnImpulse turns;
   PerTrace per_trace;                              // with an unexplained verdict over several traces
   SpecimenShape specimens;                         // and there, when each trace alone wants the actee's power law

@@ -136,6 +136,7 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
   for (const auto& set : d.ambiguous) {
     std::string s;
     for (EffectKind k : set) s += (s.empty() ? "" : " + ") + std::string(manifest_of(k).name);
+    if (d.turns.adopted) s += " (and the turns' arm_inertia)";
     out += "  as good: " + s + "\n";
   }
   for (const LookAlike& l : d.look_alikes) {
@@ -164,8 +165,11 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     std::snprintf(line, sizeof line,
                   "the turns (left out of every fit: friction turns over there), in %zu stretches of motion: the torque "
                   "left over across each, against its change of speed, is an arm inertia of %+.3g +- %.2g kg*m^2 beyond "
-                  "the model's (reported, not judged)\n",
-                  d.turns.stretches, d.turns.inertia, d.turns.sigma);
+                  "the model's; slowing into the turns %+.3g +- %.2g (%zu stretches), speeding out of them %+.3g +- "
+                  "%.2g (%zu) (%s)\n",
+                  d.turns.stretches, d.turns.inertia, d.turns.sigma, d.turns.slowing.inertia, d.turns.slowing.sigma,
+                  d.turns.slowing.stretches, d.turns.speeding.inertia, d.turns.speeding.sigma,
+                  d.turns.speeding.stretches, d.turns.adopted ? "named among the effects" : "not named");
     out += line;
   }
   if (d.per_trace.computed) {
@@ -319,8 +323,14 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
                                             {"structured_share", num(d.out_of_contact.test.share)}}
                                      : Json(nullptr)}}}};
   if (d.turns.stretches >= 3) {
-    j["turns"] = {{"stretches", d.turns.stretches},
-                  {"arm_inertia", {{"value", num(d.turns.inertia)}, {"unit", "kg*m^2"}, {"uncertainty", num(d.turns.sigma)}}}};
+    auto estimate = [&](const InertiaEstimate& e) {
+      return Json{{"stretches", e.stretches},
+                  {"arm_inertia", {{"value", num(e.inertia)}, {"unit", "kg*m^2"}, {"uncertainty", num(e.sigma)}}}};
+    };
+    j["turns"] = estimate(d.turns);
+    j["turns"]["slowing"] = estimate(d.turns.slowing);
+    j["turns"]["speeding"] = estimate(d.turns.speeding);
+    j["turns"]["adopted"] = d.turns.adopted;
   }
   if (d.per_trace.computed) {
     Json parameter = Json::array();

@@ -19,11 +19,39 @@ bool crossable(const Replay& r, size_t s) {
          s >= r.history;
 }
 
+// Least-squares sums of the torque left over (N*m) on the mean
+// acceleration (rad/s^2) over stretches.
+struct Sums {
+  double sxx = 0, sxy = 0, syy = 0;
+  size_t n = 0;
+  void add(double change, double mean) {
+    sxx += change * change;
+    sxy += change * mean;
+    syy += mean * mean;
+    ++n;
+  }
+  InertiaEstimate estimate() const {
+    InertiaEstimate e;
+    e.stretches = n;
+    if (n < kLeastStretches || !(sxx > 0)) return e;
+    // The model's torque lacks -inertia * acceleration (fit.cpp's column).
+    e.inertia = -sxy / sxx;
+    const double scatter = std::max(0.0, syy - sxy * sxy / sxx) / static_cast<double>(n - 1);  // (N*m)^2
+    e.sigma = std::sqrt(scatter / sxx);
+    return e;
+  }
+};
+
 }  // namespace
 
+bool halves_agree(const TurnImpulse& t) {
+  const InertiaEstimate &a = t.slowing, &b = t.speeding;
+  return a.stretches >= kLeastStretches && b.stretches >= kLeastStretches &&
+         std::abs(a.inertia - b.inertia) <= kHalvesAgree * std::hypot(a.sigma, b.sigma);
+}
+
 TurnImpulse turn_impulse(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& left_over) {
-  TurnImpulse out;
-  double sxx = 0, sxy = 0, syy = 0;  // (rad/s^2)^2, rad/s^2 * N*m, (N*m)^2
+  Sums all, slowing, speeding;
   for (size_t i = 0; i < replays.size(); ++i) {
     const Replay& r = replays[i];
     if (r.rig != Rig::lever) continue;
@@ -73,18 +101,15 @@ TurnImpulse turn_impulse(const std::vector<Replay>& replays, const std::vector<s
         for (size_t j = from; j <= to; ++j) mean += left_over[i][j];
         mean /= static_cast<double>(to - from + 1);
         const double change = (r.rate[to] - r.rate[from]) / (r.t[to] - r.t[from]);  // rad/s^2, the mean acceleration
-        sxx += change * change;
-        sxy += change * mean;
-        syy += mean * mean;
-        ++out.stretches;
+        all.add(change, mean);
+        (std::abs(r.rate[to]) < std::abs(r.rate[from]) ? slowing : speeding).add(change, mean);
       }
     }
   }
-  if (out.stretches < kLeastStretches || !(sxx > 0)) return out;
-  // The model's torque lacks -inertia * acceleration (fit.cpp's column).
-  out.inertia = -sxy / sxx;
-  const double scatter = std::max(0.0, syy - sxy * sxy / sxx) / static_cast<double>(out.stretches - 1);  // (N*m)^2
-  out.sigma = std::sqrt(scatter / sxx);
+  TurnImpulse out;
+  static_cast<InertiaEstimate&>(out) = all.estimate();
+  out.slowing = slowing.estimate();
+  out.speeding = speeding.estimate();
   return out;
 }
 

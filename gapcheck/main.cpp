@@ -52,7 +52,8 @@ std::vector<std::string> sorted_names(const std::vector<afford::EffectKind>& kin
 // selection step holds the effects chosen before it and one that fits as
 // well as that step's choice, and is completed with the effects chosen
 // after it (the adopted ones are in the order chosen); a look-alike set is
-// whole already.
+// whole already. An inertia named from the turns (adopted last) joins
+// every set: the fits that made them did not see it.
 Diagnosed summary(const afford::Diagnosis& d) {
   Diagnosed s;
   s.verdict = afford::verdict_name(d.verdict);
@@ -63,8 +64,10 @@ Diagnosed summary(const afford::Diagnosis& d) {
   std::vector<afford::EffectKind> adopted;
   for (const afford::EffectFit& e : d.effects) adopted.push_back(e.kind);
   s.effects = sorted_names(adopted);
+  if (d.turns.adopted) adopted.pop_back();
   for (std::vector<afford::EffectKind> set : d.ambiguous) {
     for (size_t i = set.size(); i < adopted.size(); ++i) set.push_back(adopted[i]);
+    if (d.turns.adopted) set.push_back(afford::EffectKind::arm_inertia);
     std::vector<std::string> names = sorted_names(set);
     names.erase(std::unique(names.begin(), names.end()), names.end());
     if (std::find(s.alternatives.begin(), s.alternatives.end(), names) == s.alternatives.end()) {
