@@ -1192,7 +1192,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // something else is at work.
   const bool inertia_asked = std::find(library.begin(), library.end(), EffectKind::arm_inertia) != library.end();
   const bool inertia_chosen = std::find(chosen.begin(), chosen.end(), EffectKind::arm_inertia) != chosen.end();
-  if (d.verdict != Verdict::unexplained && inertia_asked && !inertia_chosen && d.turns.stretches >= 3 &&
+  if (d.verdict != Verdict::unexplained && inertia_asked && !inertia_chosen &&
       d.turns.inertia > kTurnsAsk * d.turns.sigma && halves_agree(d.turns)) {
     EffectFit e;
     e.kind = EffectKind::arm_inertia;
@@ -1203,7 +1203,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     if (d.verdict == Verdict::none) d.verdict = Verdict::explained;
     std::snprintf(line, sizeof line,
                   "  the turns ask for an arm inertia of %+.3g +- %.2g kg*m^2 beyond the model's, %.1f standard errors "
-                  "(over %.0f), and the fits between them named none: named",
+                  "(over %.0f), slowing into them and speeding out alike, and the fits between them named none: "
+                  "named",
                   d.turns.inertia, d.turns.sigma, d.turns.inertia / d.turns.sigma, kTurnsAsk);
     d.steps.push_back(line);
   }

@@ -162,14 +162,21 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     out += d.effects.empty() ? ".\n" : " after the effects above.\n";
   }
   if (d.turns.stretches >= 3) {
+    auto half = [&](const InertiaEstimate& e) {
+      char text[96];
+      if (e.stretches < 3) {
+        std::snprintf(text, sizeof text, "too few stretches (%zu)", e.stretches);
+      } else {
+        std::snprintf(text, sizeof text, "%+.3g +- %.2g (%zu stretches)", e.inertia, e.sigma, e.stretches);
+      }
+      return std::string(text);
+    };
     std::snprintf(line, sizeof line,
                   "the turns (left out of every fit: friction turns over there), in %zu stretches of motion: the torque "
                   "left over across each, against its change of speed, is an arm inertia of %+.3g +- %.2g kg*m^2 beyond "
-                  "the model's; slowing into the turns %+.3g +- %.2g (%zu stretches), speeding out of them %+.3g +- "
-                  "%.2g (%zu) (%s)\n",
-                  d.turns.stretches, d.turns.inertia, d.turns.sigma, d.turns.slowing.inertia, d.turns.slowing.sigma,
-                  d.turns.slowing.stretches, d.turns.speeding.inertia, d.turns.speeding.sigma,
-                  d.turns.speeding.stretches, d.turns.adopted ? "named among the effects" : "not named");
+                  "the model's; slowing into the turns %s, speeding out of them %s (%s)\n",
+                  d.turns.stretches, d.turns.inertia, d.turns.sigma, half(d.turns.slowing).c_str(),
+                  half(d.turns.speeding).c_str(), d.turns.adopted ? "named among the effects" : "not named");
     out += line;
   }
   if (d.per_trace.computed) {
@@ -323,9 +330,13 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
                                             {"structured_share", num(d.out_of_contact.test.share)}}
                                      : Json(nullptr)}}}};
   if (d.turns.stretches >= 3) {
+    // A half of fewer than three stretches is counted, not estimated.
     auto estimate = [&](const InertiaEstimate& e) {
       return Json{{"stretches", e.stretches},
-                  {"arm_inertia", {{"value", num(e.inertia)}, {"unit", "kg*m^2"}, {"uncertainty", num(e.sigma)}}}};
+                  {"arm_inertia", e.stretches < 3 ? Json(nullptr)
+                                                  : Json{{"value", num(e.inertia)},
+                                                         {"unit", "kg*m^2"},
+                                                         {"uncertainty", num(e.sigma)}}}};
     };
     j["turns"] = estimate(d.turns);
     j["turns"]["slowing"] = estimate(d.turns.slowing);
