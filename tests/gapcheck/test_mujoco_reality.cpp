@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <memory>
+#include <string>
 
 #include "design.h"
 #include "reality.h"
@@ -20,6 +22,19 @@ gapcheck::PlayDrive playing(const gapcheck::Reality& reality) {
 
 }  // namespace
 
+// Each test draws its cases into its own folder and plays them in one
+// MuJoCo reality, as the generator does.
+class GapcheckMujocoReality : public testing::Test {
+ protected:
+  static fs::path cases_in(const std::string& folder) {
+    const fs::path cases = fs::path(testing::TempDir()) / folder;
+    fs::create_directories(cases);
+    return cases;
+  }
+  const std::unique_ptr<gapcheck::Reality> reality = gapcheck::make_mujoco_reality();
+  const gapcheck::PlayDrive play = playing(*reality);
+};
+
 // An actee in the jaws is pressed as the plates press it: its force at a
 // depth is the specimen's law there (MuJoCo's linear spring, k p, for the
 // effect-free specimen), the depth being the lever's, lever * (contact
@@ -29,11 +44,9 @@ gapcheck::PlayDrive playing(const gapcheck::Reality& reality) {
 // model. Before, this pecan's force was up to 0.48 % over the lever's
 // depth (now 0.036 %), and effect-free pecans (development seeds 3082,
 // 3094) read as an actee's law.
-TEST(GapcheckMujocoReality, AnActeeInTheJawsTakesTheDepthTheLeverGives) {
-  const fs::path cases = fs::path(testing::TempDir()) / "gapcheck-mujoco-reality";
-  fs::create_directories(cases);
-  const std::unique_ptr<gapcheck::Reality> reality = gapcheck::make_mujoco_reality();
-  const gapcheck::Case drawn = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, 3094, playing(*reality));
+TEST_F(GapcheckMujocoReality, AnActeeInTheJawsTakesTheDepthTheLeverGives) {
+  const fs::path cases = cases_in("gapcheck-mujoco-reality");
+  const gapcheck::Case drawn = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, 3094, play);
   ASSERT_TRUE(drawn.tool.actee.has_value());
   ASSERT_NE(drawn.tool.actee->file.find("pecan"), std::string::npos);
   gapcheck::Case silent = drawn;
@@ -63,11 +76,8 @@ TEST(GapcheckMujocoReality, AnActeeInTheJawsTakesTheDepthTheLeverGives) {
 // against 3 to 19 N (twice the floor), and 3213 read `none` in ODE. Now
 // 3238 draws another effect outside the library, and 3197 keeps a
 // viscoelastic actee sized on the floor.
-TEST(GapcheckMujocoReality, AViscoelasticActeeIsDrawnOnlyWhereItShowsAtTwiceTheFloor) {
-  const fs::path cases = fs::path(testing::TempDir()) / "gapcheck-mujoco-viscoelastic";
-  fs::create_directories(cases);
-  const std::unique_ptr<gapcheck::Reality> reality = gapcheck::make_mujoco_reality();
-  const gapcheck::PlayDrive play = playing(*reality);
+TEST_F(GapcheckMujocoReality, AViscoelasticActeeIsDrawnOnlyWhereItShowsAtTwiceTheFloor) {
+  const fs::path cases = cases_in("gapcheck-mujoco-viscoelastic");
   int relaxing = 0;
   for (unsigned seed : {3197u, 3238u}) {
     const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, seed, play);
@@ -84,11 +94,8 @@ TEST(GapcheckMujocoReality, AViscoelasticActeeIsDrawnOnlyWhereItShowsAtTwiceTheF
 // closing-only strokes (development seed 3072) changed the effort by
 // 0.92 times the noise, and a tongs' weight with a progressive spring
 // (3366) by 0.78 times (now 2.4 and 2.2 times).
-TEST(GapcheckMujocoReality, AnEffectOfTheLibraryShowsInTheEffortAtTwiceTheNoise) {
-  const fs::path cases = fs::path(testing::TempDir()) / "gapcheck-mujoco-library";
-  fs::create_directories(cases);
-  const std::unique_ptr<gapcheck::Reality> reality = gapcheck::make_mujoco_reality();
-  const gapcheck::PlayDrive play = playing(*reality);
+TEST_F(GapcheckMujocoReality, AnEffectOfTheLibraryShowsInTheEffortAtTwiceTheNoise) {
+  const fs::path cases = cases_in("gapcheck-mujoco-library");
   for (unsigned seed : {3072u, 3366u}) {
     const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, seed, play);
     ASSERT_FALSE(c.truth.names().empty()) << "seed " << seed;
@@ -103,11 +110,8 @@ TEST(GapcheckMujocoReality, AnEffectOfTheLibraryShowsInTheEffortAtTwiceTheNoise)
 // bound, it turns the hand's servo about. Before, development seed 6098 drew
 // a snips' inertia at the bound that the line promised at 2.22 times the
 // noise and that showed 1.86 times.
-TEST(GapcheckMujocoReality, EachEffectShowsAtTwiceTheNoiseAtTheSizeItIsDrawn) {
-  const fs::path cases = fs::path(testing::TempDir()) / "gapcheck-mujoco-sized";
-  fs::create_directories(cases);
-  const std::unique_ptr<gapcheck::Reality> reality = gapcheck::make_mujoco_reality();
-  const gapcheck::PlayDrive play = playing(*reality);
+TEST_F(GapcheckMujocoReality, EachEffectShowsAtTwiceTheNoiseAtTheSizeItIsDrawn) {
+  const fs::path cases = cases_in("gapcheck-mujoco-sized");
   const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, 6098, play);
   ASSERT_FALSE(c.truth.names().empty());
   int effects = 0;
@@ -130,11 +134,8 @@ TEST(GapcheckMujocoReality, EachEffectShowsAtTwiceTheNoiseAtTheSizeItIsDrawn) {
 // exponent at 4 whatever it showed, as did 8 of the 12 actee laws of
 // report seeds 1,002,900 to 1,003,199. Now those take the library's next
 // effect, and 3443 (a press) keeps a law that shows.
-TEST(GapcheckMujocoReality, AnActeesLawIsDrawnOnlyWhereItShowsAtTwiceTheFloor) {
-  const fs::path cases = fs::path(testing::TempDir()) / "gapcheck-mujoco-actee-law";
-  fs::create_directories(cases);
-  const std::unique_ptr<gapcheck::Reality> reality = gapcheck::make_mujoco_reality();
-  const gapcheck::PlayDrive play = playing(*reality);
+TEST_F(GapcheckMujocoReality, AnActeesLawIsDrawnOnlyWhereItShowsAtTwiceTheFloor) {
+  const fs::path cases = cases_in("gapcheck-mujoco-actee-law");
   {
     const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, cases, 3451, play);
     EXPECT_EQ(c.truth.actee_exponent, 0.0);
