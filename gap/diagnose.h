@@ -113,7 +113,8 @@ struct DiagnoseOptions {
 
 Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options = {});
 
-// The measurement's model with the fitted effects switched on.
+// The measurement with the fitted effects among its own, and its model.
+Measurement with_effects(const Measurement& m, const std::vector<EffectFit>& effects);
 Model compile_with(const Measurement& m, const std::vector<EffectFit>& effects);
 
 }  // namespace afford

@@ -46,8 +46,9 @@ struct Sums {
 
 bool halves_agree(const TurnImpulse& t) {
   const InertiaEstimate &a = t.slowing, &b = t.speeding;
+  const double apart = std::abs(a.inertia - b.inertia);
   return a.stretches >= kLeastStretches && b.stretches >= kLeastStretches &&
-         std::abs(a.inertia - b.inertia) <= kHalvesAgree * std::hypot(a.sigma, b.sigma);
+         (apart <= kHalvesAgree * std::hypot(a.sigma, b.sigma) || apart <= kHalvesNear * std::abs(a.inertia + b.inertia) / 2);
 }
 
 TurnImpulse turn_impulse(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& left_over) {

@@ -47,8 +47,15 @@ struct TurnImpulse : InertiaEstimate {
 constexpr double kTurnsAsk = 5;
 
 // Both halves alike: they differ by under this many standard errors of
-// their difference.
+// their difference, or by under kHalvesNear of their mean. Where the
+// halves are known to a hundredth, an effect outside the model biases
+// them apart by a shade of what they share: an inertia with a damping or
+// friction the adopted set lacks or misplaces, written by formula, asks
+// for halves 2 to 14 % apart at over 3 standard errors, while a bias
+// without an inertia leaves one half near nothing (the halves above
+// differ by 1.9 and 6.5 times their mean).
 constexpr double kHalvesAgree = 3;
+constexpr double kHalvesNear = 0.5;
 bool halves_agree(const TurnImpulse& t);
 
 // From every lever replay's torque left over by a model (`left_over[i]`,
