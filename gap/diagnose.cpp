@@ -1194,16 +1194,18 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   const bool inertia_asked = std::find(library.begin(), library.end(), EffectKind::arm_inertia) != library.end();
   const bool inertia_chosen = std::find(chosen.begin(), chosen.end(), EffectKind::arm_inertia) != chosen.end();
   const bool turns_ask = inertia_asked && !inertia_chosen && d.turns.inertia > kTurnsAsk * d.turns.sigma &&
-                         halves_agree(d.turns);
+                         halves_agree(d.turns) && d.turns.force > d.noise;
   EffectFit from_turns;
   from_turns.kind = EffectKind::arm_inertia;
   from_turns.value[0] = nominal_value(model, EffectKind::arm_inertia) + d.turns.inertia;
   from_turns.sigma[0] = d.turns.sigma;
-  std::snprintf(line, sizeof line,
+  char turns_text[384];
+  std::snprintf(turns_text, sizeof turns_text,
                 "  the turns ask for an arm inertia of %+.3g +- %.2g kg*m^2 beyond the model's, %.1f standard errors "
-                "(over %.0f), slowing into them and speeding out alike, and the fits between them named none",
-                d.turns.inertia, d.turns.sigma, d.turns.inertia / d.turns.sigma, kTurnsAsk);
-  const std::string turns_line = line;
+                "(over %.0f), slowing into them and speeding out alike, %.3g N at the effort across them (over the "
+                "noise), and the fits between them named none",
+                d.turns.inertia, d.turns.sigma, d.turns.inertia / d.turns.sigma, kTurnsAsk, d.turns.force);
+  const std::string turns_line = turns_text;
   std::vector<PhaseShare> folded_phases;  // where the gap lies after, with the turns' inertia in the model
   if (turns_ask && d.verdict != Verdict::unexplained) {
     // Named beside what the fits explained.

@@ -174,8 +174,10 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     std::snprintf(line, sizeof line,
                   "the turns (left out of every fit: friction turns over there), in %zu stretches of motion: the torque "
                   "left over across each, against its change of speed, is an arm inertia of %+.3g +- %.2g kg*m^2 beyond "
-                  "the model's; slowing into the turns %s, speeding out of them %s (%s)\n",
-                  d.turns.stretches, d.turns.inertia, d.turns.sigma, half(d.turns.slowing).c_str(),
+                  "the model's (%.3g N at the effort across the turns, %.2g times the noise); slowing into the turns %s, "
+                  "speeding out of them %s (%s)\n",
+                  d.turns.stretches, d.turns.inertia, d.turns.sigma, d.turns.force,
+                  d.noise > 0 ? d.turns.force / d.noise : 0.0, half(d.turns.slowing).c_str(),
                   half(d.turns.speeding).c_str(), d.turns.adopted ? "named among the effects" : "not named");
     out += line;
   }
@@ -342,6 +344,7 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
     j["turns"]["slowing"] = estimate(d.turns.slowing);
     j["turns"]["speeding"] = estimate(d.turns.speeding);
     j["turns"]["adopted"] = d.turns.adopted;
+    j["turns"]["force"] = Json{{"value", num(d.turns.force)}, {"unit", "N"}};
   }
   if (d.per_trace.computed) {
     Json parameter = Json::array();

@@ -53,6 +53,7 @@ bool halves_agree(const TurnImpulse& t) {
 
 TurnImpulse turn_impulse(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& left_over) {
   Sums all, slowing, speeding;
+  double force_sq = 0;  // (N per kg*m^2)^2: each stretch's mean acceleration at the effort, squared, summed
   for (size_t i = 0; i < replays.size(); ++i) {
     const Replay& r = replays[i];
     if (r.rig != Rig::lever) continue;
@@ -103,6 +104,7 @@ TurnImpulse turn_impulse(const std::vector<Replay>& replays, const std::vector<s
         mean /= static_cast<double>(to - from + 1);
         const double change = (r.rate[to] - r.rate[from]) / (r.t[to] - r.t[from]);  // rad/s^2, the mean acceleration
         all.add(change, mean);
+        force_sq += change * r.to_newtons * change * r.to_newtons;
         (std::abs(r.rate[to]) < std::abs(r.rate[from]) ? slowing : speeding).add(change, mean);
       }
     }
@@ -111,6 +113,7 @@ TurnImpulse turn_impulse(const std::vector<Replay>& replays, const std::vector<s
   static_cast<InertiaEstimate&>(out) = all.estimate();
   out.slowing = slowing.estimate();
   out.speeding = speeding.estimate();
+  if (out.stretches >= kLeastStretches) out.force = std::abs(out.inertia) * std::sqrt(force_sq / static_cast<double>(out.stretches));
   return out;
 }
 
