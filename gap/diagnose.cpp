@@ -1239,6 +1239,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       d.turns.adopted = true;
       d.ambiguous = folded.ambiguous;
       d.look_alikes = folded.look_alikes;
+      d.gain_alike = folded.gain_alike;
+      d.gain_alike_explains = folded.gain_alike_explains;
       d.noise_through_model = folded.noise_through_model;
       d.rmse_after = folded.rmse_after;
       d.contact_after = folded.contact_after;
