@@ -161,10 +161,10 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     out += "nothing in the library explains what is left";
     out += d.effects.empty() ? ".\n" : " after the effects above.\n";
   }
-  if (d.turns.stretches >= 3) {
+  if (d.turns.stretches >= kLeastStretches) {
     auto half = [&](const InertiaEstimate& e) {
       char text[96];
-      if (e.stretches < 3) {
+      if (e.stretches < kLeastStretches) {
         std::snprintf(text, sizeof text, "too few stretches (%zu)", e.stretches);
       } else {
         std::snprintf(text, sizeof text, "%+.3g +- %.2g (%zu stretches)", e.inertia, e.sigma, e.stretches);
@@ -331,11 +331,11 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
                                             {"threshold", num(d.out_of_contact.test.threshold)},
                                             {"structured_share", num(d.out_of_contact.test.share)}}
                                      : Json(nullptr)}}}};
-  if (d.turns.stretches >= 3) {
+  if (d.turns.stretches >= kLeastStretches) {
     // A half of fewer than three stretches is counted, not estimated.
     auto estimate = [&](const InertiaEstimate& e) {
       return Json{{"stretches", e.stretches},
-                  {"arm_inertia", e.stretches < 3 ? Json(nullptr)
+                  {"arm_inertia", e.stretches < kLeastStretches ? Json(nullptr)
                                                   : Json{{"value", num(e.inertia)},
                                                          {"unit", "kg*m^2"},
                                                          {"uncertainty", num(e.sigma)}}}};

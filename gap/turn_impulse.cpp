@@ -8,7 +8,6 @@
 namespace afford {
 namespace {
 
-constexpr size_t kLeastStretches = 3;
 constexpr double kLongestTurn = 1.0;  // s: a stretch between resolved speeds longer than this is no turn
 constexpr double kShortest = 0.005;   // s: a stretch in motion shorter than this inside a turn is left out
 
@@ -48,7 +47,8 @@ bool halves_agree(const TurnImpulse& t) {
   const InertiaEstimate &a = t.slowing, &b = t.speeding;
   const double apart = std::abs(a.inertia - b.inertia);
   return a.stretches >= kLeastStretches && b.stretches >= kLeastStretches &&
-         (apart <= kHalvesAgree * std::hypot(a.sigma, b.sigma) || apart <= kHalvesNear * std::abs(a.inertia + b.inertia) / 2);
+         (apart <= kHalvesAgree * std::hypot(a.sigma, b.sigma) ||
+          apart <= kHalvesNear * std::abs(a.inertia + b.inertia) / 2);
 }
 
 TurnImpulse turn_impulse(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& left_over) {
@@ -113,7 +113,9 @@ TurnImpulse turn_impulse(const std::vector<Replay>& replays, const std::vector<s
   static_cast<InertiaEstimate&>(out) = all.estimate();
   out.slowing = slowing.estimate();
   out.speeding = speeding.estimate();
-  if (out.stretches >= kLeastStretches) out.force = std::abs(out.inertia) * std::sqrt(force_sq / static_cast<double>(out.stretches));
+  if (out.stretches >= kLeastStretches) {
+    out.force = std::abs(out.inertia) * std::sqrt(force_sq / static_cast<double>(out.stretches));
+  }
   return out;
 }
 

@@ -19,6 +19,9 @@
 
 namespace afford {
 
+// Fewer stretches than this are counted, and nothing is estimated from them.
+constexpr size_t kLeastStretches = 3;
+
 struct InertiaEstimate {
   size_t stretches = 0;
   double inertia = 0;  // kg*m^2 beyond the model's, least squares over the stretches
