@@ -31,11 +31,16 @@ struct PhaseShare {
 
 // When one model does not fit the traces together: the best effect fitted
 // to each trace alone (in sample), to tell specimens that differ from one
-// another from a model that misses.
+// another (each alone at the floor) from a model that misses (not even
+// every trace alone is), and both from a shape only the traces together
+// show (each trace's nominal at the floor already).
 struct PerTrace {
   bool computed = false;
   EffectKind effect = EffectKind::pivot_friction;
   double rmse_nominal = 0, rmse_alone = 0;  // N, every trace, each under its own fit
+  double floor = 0;                         // N, the noise with the motion's through the effect
+  bool nominal_at_floor = false;            // every trace's nominal within the noise's tolerance of the floor
+  bool each_at_floor = false;               // every trace under its own fit within it
   std::vector<double> first_parameter;      // SI, per trace
 };
 

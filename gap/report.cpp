@@ -185,10 +185,17 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     const PerTrace& p = d.per_trace;
     const auto [lo, hi] = std::minmax_element(p.first_parameter.begin(), p.first_parameter.end());
     const EffectParam& param = manifest_of(p.effect).params[0];
+    // What the fits of each trace alone show, against the floor.
+    const char* shows = p.nominal_at_floor
+                            ? "each trace's nominal is within the noise's tolerance of it already: the gap is a shape "
+                              "only the traces together show, not a difference between them"
+                        : p.each_at_floor ? "each trace alone is within the noise's tolerance of it: the traces differ "
+                                            "from one another more than one model allows"
+                                          : "no one effect of the library explains every trace even alone";
     std::snprintf(line, sizeof line,
                   "each trace alone (in sample): %s would take the gap from %.4g N to %.4g N, with %s from %.4g to %.4g; "
-                  "the traces differ from one another more than one model allows\n",
-                  manifest_of(p.effect).name, p.rmse_nominal, p.rmse_alone, param.key, *lo, *hi);
+                  "the floor %.4g N: %s\n",
+                  manifest_of(p.effect).name, p.rmse_nominal, p.rmse_alone, param.key, *lo, *hi, p.floor, shows);
     out += line;
   }
   if (d.specimens.computed) {
@@ -352,6 +359,9 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
     j["per_trace"] = {{"effect", manifest_of(d.per_trace.effect).name},
                       {"rmse_nominal", num(d.per_trace.rmse_nominal)},
                       {"rmse_alone", num(d.per_trace.rmse_alone)},
+                      {"floor", num(d.per_trace.floor)},
+                      {"nominal_at_floor", d.per_trace.nominal_at_floor},
+                      {"each_at_floor", d.per_trace.each_at_floor},
                       {"parameter", parameter}};
   }
   if (d.specimens.computed) {

@@ -175,6 +175,14 @@ TEST(Gap, WithoutTheTrueEffectInTheLibraryItSaysUnexplained) {
   EXPECT_FALSE(d.residual.white);
   const std::string json = report_json(d);
   EXPECT_THAT(json, HasSubstr("\"verdict\":\"unexplained\""));
+  // Fitted to each trace alone, no effect left takes up friction's square
+  // wave either: the model misses, the traces do not differ.
+  ASSERT_TRUE(d.per_trace.computed) << report_text(d);
+  EXPECT_FALSE(d.per_trace.nominal_at_floor);
+  EXPECT_FALSE(d.per_trace.each_at_floor) << report_text(d);
+  EXPECT_GT(d.per_trace.rmse_alone, 1.15 * d.per_trace.floor) << report_text(d);
+  EXPECT_THAT(report_text(d), HasSubstr("no one effect of the library explains every trace even alone"));
+  EXPECT_THAT(json, HasSubstr("\"nominal_at_floor\":false,\"each_at_floor\":false"));
 }
 
 TEST(Gap, ASmallEffectAtTheNoiseButPlainInShapeIsNamed) {
@@ -196,6 +204,11 @@ TEST(Gap, ASmallEffectAtTheNoiseButPlainInShapeIsNamed) {
                      EffectKind::arm_inertia, EffectKind::gravity, EffectKind::sensor_latency};
   const Diagnosis withheld = diagnose(load_measurement(file.string()), options);
   EXPECT_EQ(withheld.verdict, Verdict::unexplained) << report_text(withheld);
+  // Each trace's nominal is within the tolerance already: what is left is
+  // a shape the 20,000 samples together show, not traces that differ.
+  ASSERT_TRUE(withheld.per_trace.computed) << report_text(withheld);
+  EXPECT_TRUE(withheld.per_trace.nominal_at_floor) << report_text(withheld);
+  EXPECT_THAT(report_text(withheld), HasSubstr("the gap is a shape only the traces together show"));
 }
 
 TEST(Gap, TurningTheToolTellsItsWeightFromThePreload) {
@@ -219,6 +232,58 @@ TEST(Gap, TurningTheToolTellsItsWeightFromThePreload) {
     if (e.kind != EffectKind::gravity) options.library.push_back(e.kind);
   }
   EXPECT_EQ(diagnose(m, options).verdict, Verdict::unexplained);
+}
+
+TEST(Gap, EachWayUpAWeightIsAPreloadOfItsOwn) {
+  // 0.01 N*m of weight (0.06 N at the effort, three times the noise), the
+  // tool one way up and then the other, gravity withheld: together no
+  // effect cuts the gap (a preload of one sign misses the other trace as
+  // far), so the best effect together is none in particular. Fitted to
+  // each trace alone, a preload of its own takes each to the noise: about
+  // 1.5 - 0.93 N upright and 1.5 + 0.93 N turned (0.01 N*m times a cosine
+  // of 0.93 over the 10 mm spring arm).
+  DiagnoseOptions options;
+  for (const EffectManifest& e : effect_registry()) {
+    if (e.kind != EffectKind::gravity) options.library.push_back(e.kind);
+  }
+  const Diagnosis d =
+      diagnose(load_measurement(turned_measurement("small-weight", {0, 0, 0, 0.01, 0}).string()), options);
+  EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
+  const PerTrace& p = d.per_trace;
+  ASSERT_TRUE(p.computed) << report_text(d);
+  EXPECT_EQ(p.effect, EffectKind::spring_preload) << report_text(d);
+  EXPECT_FALSE(p.nominal_at_floor);
+  EXPECT_TRUE(p.each_at_floor) << report_text(d);
+  ASSERT_EQ(p.first_parameter.size(), 2u);
+  EXPECT_NEAR(p.first_parameter[0], 1.5 - 0.93, 0.05) << report_text(d);
+  EXPECT_NEAR(p.first_parameter[1], 1.5 + 0.93, 0.05) << report_text(d);
+  EXPECT_THAT(report_text(d), HasSubstr("the traces differ from one another more than one model allows"));
+}
+
+TEST(Gap, TracesThatDifferAreToldFromAModelThatMisses) {
+  // One nutcracker's two traces, its pivot's friction 0.2 N*m over the
+  // model's in one and 0.5 in the other (worn in between): one friction
+  // for both misses each by 0.15 N*m (0.94 N at the effort), a square
+  // wave of either sign, which no effect takes up. Fitted to each trace
+  // alone, friction takes each to the noise: the traces differ.
+  const fs::path dir = test::fresh_dir("gap", "differ");
+  write(dir / "a.csv", lever_trace({0.2, 0, 0, 0, 0}, 1));
+  write(dir / "b.csv", lever_trace({0.5, 0, 0, 0, 0}, 2));
+  write(dir / "m.yaml", "measurement: differ\nobject: " + kSource +
+                            "/objects/nutcracker.yaml\neffort_at: 160 mm\ntraces: [a.csv, b.csv]\n");
+  const Diagnosis d = diagnose(load_measurement((dir / "m.yaml").string()));
+  EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
+  const PerTrace& p = d.per_trace;
+  ASSERT_TRUE(p.computed) << report_text(d);
+  EXPECT_EQ(p.effect, EffectKind::pivot_friction) << report_text(d);
+  EXPECT_FALSE(p.nominal_at_floor);
+  EXPECT_TRUE(p.each_at_floor) << report_text(d);
+  ASSERT_EQ(p.first_parameter.size(), 2u);
+  EXPECT_NEAR(p.first_parameter[0], 0.21, 0.002);  // the nominal 0.01 and the hidden
+  EXPECT_NEAR(p.first_parameter[1], 0.51, 0.002);
+  EXPECT_NEAR(p.rmse_alone, 0.02, 0.002) << report_text(d);
+  EXPECT_THAT(report_text(d), HasSubstr("the traces differ from one another more than one model allows"));
+  EXPECT_THAT(report_json(d), HasSubstr("\"nominal_at_floor\":false,\"each_at_floor\":true"));
 }
 
 TEST(Gap, TheAnglesNoiseThroughAnInertiaIsPartOfTheNoiseFloor) {
