@@ -98,6 +98,28 @@ const EffectFit* find(const Diagnosis& d, EffectKind k) {
   return nullptr;
 }
 
+// Every effect of the library but `k`.
+DiagnoseOptions every_effect_but(EffectKind k) {
+  DiagnoseOptions options;
+  for (const EffectManifest& e : effect_registry()) {
+    if (e.kind != k) options.library.push_back(e.kind);
+  }
+  return options;
+}
+
+// Unexplained over two traces that `effect`, fitted to each alone, takes
+// to the floor where their nominal was not: the traces differ.
+void expect_two_traces_differ(const Diagnosis& d, EffectKind effect) {
+  EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
+  const PerTrace& p = d.per_trace;
+  ASSERT_TRUE(p.computed) << report_text(d);
+  EXPECT_EQ(p.effect, effect) << report_text(d);
+  EXPECT_FALSE(p.nominal_at_floor);
+  EXPECT_TRUE(p.each_at_floor) << report_text(d);
+  ASSERT_EQ(p.first_parameter.size(), 2u);
+  EXPECT_THAT(report_text(d), HasSubstr("the traces differ from one another more than one model allows"));
+}
+
 // An effect a verdict must name, its first parameter and how near it must come.
 struct Named {
   EffectKind kind;
@@ -227,11 +249,7 @@ TEST(Gap, TurningTheToolTellsItsWeightFromThePreload) {
   ASSERT_NE(g, nullptr) << report_text(d);
   EXPECT_NEAR(g->value[0], 0.1, 0.005);
   // With gravity taken out of the library no preload can stand in for it.
-  DiagnoseOptions options;
-  for (const EffectManifest& e : effect_registry()) {
-    if (e.kind != EffectKind::gravity) options.library.push_back(e.kind);
-  }
-  EXPECT_EQ(diagnose(m, options).verdict, Verdict::unexplained);
+  EXPECT_EQ(diagnose(m, every_effect_but(EffectKind::gravity)).verdict, Verdict::unexplained);
 }
 
 TEST(Gap, EachWayUpAWeightIsAPreloadOfItsOwn) {
@@ -242,22 +260,11 @@ TEST(Gap, EachWayUpAWeightIsAPreloadOfItsOwn) {
   // each trace alone, a preload of its own takes each to the noise: about
   // 1.5 - 0.93 N upright and 1.5 + 0.93 N turned (0.01 N*m times a cosine
   // of 0.93 over the 10 mm spring arm).
-  DiagnoseOptions options;
-  for (const EffectManifest& e : effect_registry()) {
-    if (e.kind != EffectKind::gravity) options.library.push_back(e.kind);
-  }
-  const Diagnosis d =
-      diagnose(load_measurement(turned_measurement("small-weight", {0, 0, 0, 0.01, 0}).string()), options);
-  EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
-  const PerTrace& p = d.per_trace;
-  ASSERT_TRUE(p.computed) << report_text(d);
-  EXPECT_EQ(p.effect, EffectKind::spring_preload) << report_text(d);
-  EXPECT_FALSE(p.nominal_at_floor);
-  EXPECT_TRUE(p.each_at_floor) << report_text(d);
-  ASSERT_EQ(p.first_parameter.size(), 2u);
-  EXPECT_NEAR(p.first_parameter[0], 1.5 - 0.93, 0.05) << report_text(d);
-  EXPECT_NEAR(p.first_parameter[1], 1.5 + 0.93, 0.05) << report_text(d);
-  EXPECT_THAT(report_text(d), HasSubstr("the traces differ from one another more than one model allows"));
+  const Diagnosis d = diagnose(load_measurement(turned_measurement("small-weight", {0, 0, 0, 0.01, 0}).string()),
+                               every_effect_but(EffectKind::gravity));
+  ASSERT_NO_FATAL_FAILURE(expect_two_traces_differ(d, EffectKind::spring_preload));
+  EXPECT_NEAR(d.per_trace.first_parameter[0], 1.5 - 0.93, 0.05) << report_text(d);
+  EXPECT_NEAR(d.per_trace.first_parameter[1], 1.5 + 0.93, 0.05) << report_text(d);
 }
 
 TEST(Gap, TracesThatDifferAreToldFromAModelThatMisses) {
@@ -272,17 +279,10 @@ TEST(Gap, TracesThatDifferAreToldFromAModelThatMisses) {
   write(dir / "m.yaml", "measurement: differ\nobject: " + kSource +
                             "/objects/nutcracker.yaml\neffort_at: 160 mm\ntraces: [a.csv, b.csv]\n");
   const Diagnosis d = diagnose(load_measurement((dir / "m.yaml").string()));
-  EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
-  const PerTrace& p = d.per_trace;
-  ASSERT_TRUE(p.computed) << report_text(d);
-  EXPECT_EQ(p.effect, EffectKind::pivot_friction) << report_text(d);
-  EXPECT_FALSE(p.nominal_at_floor);
-  EXPECT_TRUE(p.each_at_floor) << report_text(d);
-  ASSERT_EQ(p.first_parameter.size(), 2u);
-  EXPECT_NEAR(p.first_parameter[0], 0.21, 0.002);  // the nominal 0.01 and the hidden
-  EXPECT_NEAR(p.first_parameter[1], 0.51, 0.002);
-  EXPECT_NEAR(p.rmse_alone, 0.02, 0.002) << report_text(d);
-  EXPECT_THAT(report_text(d), HasSubstr("the traces differ from one another more than one model allows"));
+  ASSERT_NO_FATAL_FAILURE(expect_two_traces_differ(d, EffectKind::pivot_friction));
+  EXPECT_NEAR(d.per_trace.first_parameter[0], 0.21, 0.002);  // the nominal 0.01 and the hidden
+  EXPECT_NEAR(d.per_trace.first_parameter[1], 0.51, 0.002);
+  EXPECT_NEAR(d.per_trace.rmse_alone, 0.02, 0.002) << report_text(d);
   EXPECT_THAT(report_json(d), HasSubstr("\"nominal_at_floor\":false,\"each_at_floor\":true"));
 }
 
@@ -1272,12 +1272,8 @@ TEST(Gap, AThirdEffectThatLeavesTheHeldOutSamplesOverTheNoiseHasNotExplainedTheG
   // samples it was fitted to, it has chased what the pair left, and does
   // not explain samples it predicts this far off (that verdict named the
   // inertia with the pair).
-  DiagnoseOptions options;
-  for (const EffectManifest& e : effect_registry()) {
-    if (e.kind != EffectKind::viscous_damping) options.library.push_back(e.kind);
-  }
-  const Diagnosis d =
-      diagnose(load_measurement(kSource + "/tests/data/gap/snips-spring-late-sensor/measurement.yaml"), options);
+  const Diagnosis d = diagnose(load_measurement(kSource + "/tests/data/gap/snips-spring-late-sensor/measurement.yaml"),
+                               every_effect_but(EffectKind::viscous_damping));
   EXPECT_EQ(d.verdict, Verdict::unexplained) << report_text(d);
   EXPECT_EQ(d.effects.size(), 3u) << report_text(d);  // fitted, not enough
   EXPECT_GT(d.rmse_after, 1.15 * d.noise_through_model) << report_text(d);
