@@ -867,7 +867,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // The sets of `size` effects that explain the gap, each of their
   // effects earning its place against the set without it, the least
   // held-out error first. `short_of`: the held-out squared errors of a
-  // forward selection that ended short of explaining, or null.
+  // forward selection that ended short of explaining, or null;
+  // `slight_shape_explains`: whether a slight shape may be left (below).
   // A set explains where its held-out error is at its own floor, and a
   // large damping passes the angle's rate noise on into its prediction,
   // raising its floor with it. Where the forward selection ended short
@@ -876,7 +877,25 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // floor lies: a damping alone left 0.61 N under its floor of 0.65 N
   // where friction alone left 0.31 N, and the truth was both
   // (development seeds 5031 and 5082, a tongs in ODE).
-  auto explaining_sets = [&](size_t size, const std::vector<double>* short_of) {
+  // Where the forward selection ended short of explaining, or with three
+  // effects, the smallest set that explains is judged as a verdict is:
+  // one or two effects may leave a slight shape. Asked for a white
+  // residual only, a press turned, its truth a weight and a progressive
+  // spring, where the selection took a preload 1.7 standard errors from
+  // zero beside them, read `unexplained`: the pair left a shape of 3 %
+  // (development seed 6976, MuJoCo). Its cost is the verdict's: a
+  // look-alike that leaves a slight shape explains as well (a force
+  // sensor reading 6 % high one way up, taken to 1.02 times the floor by
+  // a progressive spring and an arm's inertia, 3.9 %: the gain is told
+  // beside them, tested). Where the selection's pair left a white
+  // residual, a pair that leaves a shape is not as good as it: a tongs'
+  // preload and damping, cracked in the first cycle, got two such pairs
+  // as look-alikes, four sets in all (development seed 8259, ODE).
+  auto explains = [&](const Scored& f, size_t effects, bool slight_shape_explains) {
+    return effects_match(f) || (slight_shape_explains && !nominal_within && effects <= 2 && matched(f) &&
+                                whiteness_of(f).share < kSlightShape);
+  };
+  auto explaining_sets = [&](size_t size, const std::vector<double>* short_of, bool slight_shape_explains) {
     std::vector<const std::vector<EffectKind>*> explaining;
     for (const std::vector<EffectKind>& set : sets) {
       if (set.size() != size) continue;
@@ -889,7 +908,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       }
       const Scored& f = score(set);
       if (short_of && paired_t(*short_of, f.sq) >= kSeparated) continue;
-      if (f.fit.valid && effects_match(f) && each_earns(set)) explaining.push_back(&set);
+      if (f.fit.valid && explains(f, set.size(), slight_shape_explains) && each_earns(set)) explaining.push_back(&set);
     }
     auto error_of = [&](const std::vector<EffectKind>* set) {
       const Scored& f = score(*set);
@@ -911,7 +930,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     const bool forward_short = !effects_match(current_scored);
     for (size_t size = 1; size <= 2; ++size) {
       const std::vector<const std::vector<EffectKind>*> explaining =
-          explaining_sets(size, forward_short ? &forward_sq : nullptr);
+          explaining_sets(size, forward_short ? &forward_sq : nullptr, true);
       if (explaining.empty()) continue;
       const Scored& best = score(*explaining.front());
       branches = {*explaining.front()};
@@ -932,7 +951,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // strokes, taken up by a weight and then a late sensor: development
     // seed 6560, ODE). Every pair that explains as well is as good.
     std::vector<std::vector<EffectKind>> more;
-    for (const std::vector<EffectKind>* set : explaining_sets(2, nullptr)) {
+    for (const std::vector<EffectKind>* set : explaining_sets(2, nullptr, false)) {
       const bool listed = std::any_of(branches.begin(), branches.end(), [&](const auto& b) { return same_set(b, *set); });
       if (!listed && as_good_as(current_scored, score(*set))) more.push_back(*set);
     }

@@ -1,14 +1,20 @@
 // The withheld check's MuJoCo reality (gapcheck/mujoco_reality.cpp): what
 // it plays is the effect-free tool its files describe, where no effect is
-// drawn.
+// drawn; and cases it played that the diagnosis once read wrong.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "case_files.h"
 #include "design.h"
+#include "diagnose.h"
+#include "effects.h"
 #include "reality.h"
 
 namespace fs = std::filesystem;
@@ -146,4 +152,33 @@ TEST_F(GapcheckMujocoReality, AnActeesLawIsDrawnOnlyWhereItShowsAtTwiceTheFloor)
     ASSERT_GT(c.truth.actee_exponent, 0.0) << "seed " << seed;
     EXPECT_GE(gapcheck::actee_law_change(c, play), 2 * gapcheck::contact_floor_of(c)) << "seed " << seed;  // 12.9 N against 3.6 N
   }
+}
+
+// The smallest set that explains is judged as the verdict judges it: it
+// may leave a slight shape, as the verdict accepts for one or two effects.
+// Development seed 6976 (a press, turned; gravity and a progressive
+// spring): the forward selection took a preload, the weight and the
+// spring, the preload 1.7 standard errors from zero; the true pair left a
+// shape of 3 % of its residual, and the smallest set that explains was
+// looked for among those with a white residual only. It read
+// `unexplained`.
+TEST_F(GapcheckMujocoReality, TheSmallestSetThatExplainsMayLeaveASlightShape) {
+  const fs::path out = cases_in("gapcheck-mujoco-slight");
+  fs::create_directories(out / "cases");
+  fs::create_directories(out / "labels");
+  const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, out / "cases", 6976, play);
+  std::vector<std::vector<gapcheck::Measured>> traces;
+  for (const gapcheck::Drive& d : c.drives) traces.push_back(reality->play(c, d, d.noise_seed));
+  std::optional<gapcheck::PlatesLaw> plates;
+  if (c.tool.actee) plates = reality->plates(c);
+  const fs::path measurement = gapcheck::write_case(out, c, traces, plates);
+  const afford::Diagnosis d = afford::diagnose(afford::load_measurement(measurement.string()));
+  std::vector<std::string> named;
+  for (const afford::EffectFit& e : d.effects) named.emplace_back(afford::manifest_of(e.kind).name);
+  std::sort(named.begin(), named.end());
+  std::vector<std::string> truth = c.truth.names();
+  std::sort(truth.begin(), truth.end());
+  ASSERT_EQ(truth, (std::vector<std::string>{"gravity", "progressive_spring"}));
+  EXPECT_EQ(afford::verdict_name(d.verdict), std::string("explained"));
+  EXPECT_EQ(named, truth);
 }
