@@ -787,6 +787,7 @@ TEST(GapDesigns, AForceSensorsSlightlyColouredNoiseIsNoGap) {
           .string()));
   ASSERT_GT(d.residual.q, d.residual.threshold) << report_text(d);  // the design: over the point
   EXPECT_EQ(d.verdict, Verdict::none) << report_text(d);
+  EXPECT_TRUE(d.effects.empty()) << report_text(d);
 }
 
 TEST(GapDesigns, ATraceWithNothingToJudgeIsNotCalledAMatch) {
