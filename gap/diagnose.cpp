@@ -670,6 +670,23 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   auto effects_match = [&](const Scored& f) {
     return !nominal_within && (within(f, 1.0) || (matched(f) && white_under(f)));
   };
+  // Where the nominal model was off, a set of one effect or two within
+  // the noise's tolerance whose residual keeps a slight shape has
+  // explained the gap (as the verdict judges it, below):
+  // over thousands of samples the whiteness test finds a shape far
+  // smaller than the tolerance allows (the right damping and latency, 2 %
+  // off, left 4.5 % of the variance shaped at 7 times the test's point,
+  // development seed 3427, both engines). A shape a look-alike leaves is
+  // most often a larger share (a backlash read as friction and an
+  // inertia, 14 %; a viscoelastic actee as an actee's law, 10 %). Three
+  // effects can trim a far gap to a slight shape (a sensor reading 80 %
+  // high one way up, taken up by a weight, a preload and friction:
+  // 4.4 %), and so can any set where the nominal model was already within
+  // the tolerance, where the shape is the gap: there only a white
+  // residual explains it.
+  auto leaves_a_slight_shape = [&](const Scored& f, size_t effects) {
+    return !nominal_within && effects <= 2 && matched(f) && whiteness_of(f).share < kSlightShape;
+  };
   // Each candidate is judged where it acts: an effect of the actee where
   // the jaws deflect it, the others over every sample.
   auto in_contact = [&](EffectKind k) { return contact_samples > 0 && manifest_of(k).home == EffectHome::actee; };
@@ -892,8 +909,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // preload and damping, cracked in the first cycle, got two such pairs
   // as look-alikes, four sets in all (development seed 8259, ODE).
   auto explains = [&](const Scored& f, size_t effects, bool slight_shape_explains) {
-    return effects_match(f) || (slight_shape_explains && !nominal_within && effects <= 2 && matched(f) &&
-                                whiteness_of(f).share < kSlightShape);
+    return effects_match(f) || (slight_shape_explains && leaves_a_slight_shape(f, effects));
   };
   auto explaining_sets = [&](size_t size, const std::vector<double>* short_of, bool slight_shape_explains) {
     std::vector<const std::vector<EffectKind>*> explaining;
@@ -1077,21 +1093,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     d.turns = turn_impulse(replays, left_over);
   }
 
-  // Where the nominal model was off, one effect or two within the noise's
-  // tolerance whose residual keeps a slight shape have explained the gap:
-  // over thousands of samples the whiteness test finds a shape far
-  // smaller than the tolerance allows (the right damping and latency, 2 %
-  // off, left 4.5 % of the variance shaped at 7 times the test's point,
-  // development seed 3427, both engines). A shape a look-alike leaves is
-  // most often a larger share (a backlash read as friction and an
-  // inertia, 14 %; a viscoelastic actee as an actee's law, 10 %). Three
-  // effects can trim a far gap to a slight shape (a sensor reading 80 %
-  // high one way up, taken up by a weight, a preload and friction:
-  // 4.4 %), and so can any set where the nominal model was already within
-  // the tolerance, where the shape is the gap: there only a white
-  // residual explains it.
-  const bool slight_shape = !nominal_within && chosen.size() <= 2 && matched(current_scored) &&
-                            d.residual.share < kSlightShape;
+  const bool slight_shape = leaves_a_slight_shape(current_scored, chosen.size());
   // A residual white on the samples fitted explains too where the
   // held-out ones are predicted beyond the tolerance (a late sensor's
   // delay fitted on fewer samples misses by more), but not for a third

@@ -104,4 +104,12 @@ fs::path write_case(const fs::path& out, const Case& c, const std::vector<std::v
   return yaml;
 }
 
+fs::path play_and_write(const fs::path& out, const Case& c, const Reality& reality) {
+  std::vector<std::vector<Measured>> traces;
+  for (const Drive& d : c.drives) traces.push_back(reality.play(c, d, d.noise_seed));
+  std::optional<PlatesLaw> plates;
+  if (c.tool.actee) plates = reality.plates(c);
+  return write_case(out, c, traces, plates);
+}
+
 }  // namespace gapcheck

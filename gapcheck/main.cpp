@@ -148,8 +148,6 @@ int main(int argc, char** argv) {
   for (unsigned seed = from; seed < from + count; ++seed) {
     const auto start = std::chrono::steady_clock::now();
     Case c;
-    std::vector<std::vector<Measured>> traces;
-    std::optional<PlatesLaw> plates;
     Made m;
     try {
       c = draw_case(source, out / "cases", seed,
@@ -158,9 +156,7 @@ int main(int argc, char** argv) {
         m.measurement = out / "cases" / (c.name + ".yaml");
         if (!fs::is_regular_file(m.measurement)) throw std::runtime_error("no case " + m.measurement.string());
       } else {
-        for (const Drive& d : c.drives) traces.push_back(reality->play(c, d, d.noise_seed));
-        if (c.tool.actee) plates = reality->plates(c);
-        m.measurement = write_case(out, c, traces, plates);
+        m.measurement = play_and_write(out, c, *reality);
       }
     } catch (const std::exception& e) {
       // A set with a case left out would not be the set its seeds name.
@@ -174,9 +170,8 @@ int main(int argc, char** argv) {
     m.diagnosed.several_orientations = turns.size() > 1;
     made.push_back(m);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "%s: %s, %zu traces, played in %.1f s", c.name.c_str(), c.group.c_str(), traces.size(), seconds);
-    if (plates) std::fprintf(stderr, "; plates %.6g N/m (misfit %.3g N)", plates->stiffness, plates->rms_misfit);
-    std::fprintf(stderr, "\n");
+    std::fprintf(stderr, "%s: %s, %zu traces, %s in %.1f s\n", c.name.c_str(), c.group.c_str(), c.drives.size(),
+                 again ? "drawn" : "played", seconds);
   }
 
   // 2. Diagnose every case, the labels unseen.

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -167,11 +166,7 @@ TEST_F(GapcheckMujocoReality, TheSmallestSetThatExplainsMayLeaveASlightShape) {
   fs::create_directories(out / "cases");
   fs::create_directories(out / "labels");
   const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, out / "cases", 6976, play);
-  std::vector<std::vector<gapcheck::Measured>> traces;
-  for (const gapcheck::Drive& d : c.drives) traces.push_back(reality->play(c, d, d.noise_seed));
-  std::optional<gapcheck::PlatesLaw> plates;
-  if (c.tool.actee) plates = reality->plates(c);
-  const fs::path measurement = gapcheck::write_case(out, c, traces, plates);
+  const fs::path measurement = gapcheck::play_and_write(out, c, *reality);
   const afford::Diagnosis d = afford::diagnose(afford::load_measurement(measurement.string()));
   std::vector<std::string> named;
   for (const afford::EffectFit& e : d.effects) named.emplace_back(afford::manifest_of(e.kind).name);
