@@ -1,4 +1,7 @@
 #include "diagnose.h"
+
+#include "blocks.h"
+#include "late_sensor.h"
 #include "sensor_gain.h"
 
 #include <algorithm>
@@ -14,7 +17,6 @@ namespace {
 
 constexpr double kMatched = 1.15;       // a held-out RMSE within this factor of the noise is the noise
 constexpr double kRealMargin = 0.05;    // an effect must cut the held-out RMSE by this fraction
-constexpr double kAiccMargin = 10;      // and the training AICc by this much
 constexpr double kSeparated = 3;        // a runner-up this many standard errors worse is told apart
 constexpr double kNearlyAsFar = 0.9;    // or one that cuts the mean squared error by less than this share of the best's cut
 constexpr int kMaxEffects = 3;
@@ -22,216 +24,10 @@ constexpr double kStructured = 2;       // a residual's whiteness statistic over
 constexpr double kSlightShape = 0.05;   // a shape with less than this share of a matched residual's variance is slight
 constexpr size_t kFolds = 5;            // cross-validation folds, at most
 
-constexpr size_t kBlocks = 4;           // blocks cut from a measurement's traces, about (at least one a trace)
-constexpr int kLateRounds = 5;           // fits of a delay on the readings the one before leaves
-constexpr double kLateSettled = 5e-4;    // s: a delay that moves less than this holds
-constexpr size_t kMinBlock = 200;       // fitted samples: a block with fewer joins its neighbour
-constexpr size_t kMinContactCut = 50;   // fitted samples in a short contact, and on each side of its cut
-constexpr double kStencilReach = 3;     // samples: how far before a delayed time its stencil reads
 // A force sensor's gain error a look-alike may have, at most: a load
 // cell's calibration is off by percents; one that reads half again or
 // half as much is a wrong unit or channel, which the user sees at once.
 constexpr double kMostGainError = 0.5;
-
-// Samples from..to of a replay: a block of its trace, judged on its own.
-// A block is cut for judging, not the force sensor's memory: a late
-// sensor at the block's first samples reads the effort of the samples
-// before it, so those (as far back as the longest delay searched, and
-// the stencil's reach) come along as its history, never fitted, judged
-// or counted. Cut without them, a late set's prediction held the block's
-// first value for the whole delay: in a stiff actee's contact many times
-// the noise, at every cut.
-Replay slice(const Replay& r, size_t from, size_t to) {
-  size_t first = from;
-  if (from > 0) {
-    const double reach = kLongestDelay + kStencilReach * (r.t[from] - r.t[from - 1]);  // s
-    while (first > 0 && r.t[from] - r.t[first - 1] <= reach) --first;
-  }
-  auto cut = [&](const auto& v) {
-    return std::decay_t<decltype(v)>(v.begin() + static_cast<long>(first), v.begin() + static_cast<long>(to));
-  };
-  Replay h;
-  char label[96];
-  std::snprintf(label, sizeof label, " (%.3f to %.3f s)", r.t[from], r.t[to - 1]);
-  h.file = r.file + label;
-  h.turned = r.turned;
-  h.x_noise = r.x_noise;
-  h.step = r.step;
-  h.inertia = r.inertia;
-  h.resolution = r.resolution;
-  h.rig = r.rig;
-  h.to_newtons = r.to_newtons;
-  h.break_at = r.break_at == SIZE_MAX ? SIZE_MAX : (r.break_at <= first ? 0 : r.break_at - first);
-  h.history = from - first;
-  h.t = cut(r.t);
-  h.x = cut(r.x);
-  h.rate = cut(r.rate);
-  h.accel = cut(r.accel);
-  h.rate_noise = cut(r.rate_noise);
-  h.accel_noise = cut(r.accel_noise);
-  h.measured = cut(r.measured);
-  h.nominal = cut(r.nominal);
-  h.deflection = cut(r.deflection);
-  h.slope = cut(r.slope);
-  h.weight = cut(r.weight);
-  if (!r.actee_measured.empty()) {
-    h.actee_measured = cut(r.actee_measured);
-    h.actee_nominal = cut(r.actee_nominal);
-  }
-  h.phase = cut(r.phase);
-  h.fitted = cut(r.fitted);
-  h.held = cut(r.held);
-  for (size_t s = 0; s < h.history; ++s) {
-    h.fitted[s] = false;
-    h.held[s] = false;
-  }
-  return h;
-}
-
-// Where the traces are cut for cross-validation: each trace into
-// contiguous blocks that hold about equal shares of what can be judged
-// (never at its middle in time: an actee that breaks early leaves its
-// first half all but unfitted), kBlocks in all about, a block of fewer
-// than kMinBlock fitted samples joined to its neighbour. What can be
-// judged is the fitted samples and, apart, those in the actee's contact,
-// each half of the whole where the jaws touch one: an actee's law is
-// fitted and judged in the contact alone, and where one trace held all
-// of it, as one block, the folds that judged it had none to fit the law
-// on (a light squeeze that touched only one way up). A contact of fewer
-// than kMinBlock fitted samples (a brush at a crack) is too little to
-// share out, and counts as what it is among the rest.
-struct Block {
-  size_t trace = 0, from = 0, to = 0;
-};
-
-// A sample fitted with the jaws on the actee.
-bool fitted_in_contact(const Replay& r, size_t s) { return r.fitted[s] && r.deflection[s] > 0; }
-
-// A contact too short to share out (a squeeze before an early crack)
-// still holds all that the actee's law shows. Left in one block, the fold
-// that judges it fits the law on no contact at all and the law is never
-// judged (development seed 6140: 155 samples before the crack, `unexplained`
-// at 1.25 times the noise with the actee's stiffness among the truth). Each
-// block that holds contact is cut at its contact's middle, the law fitted
-// on one half of the loading judged on the other; each side may hold fewer
-// than kMinBlock fitted samples (the free motion before an early touch is
-// short), but not fewer than kMinContactCut. A touch of fewer than
-// kMinContactCut samples (12 where a sine's first closing cracks a nut at
-// once) is left whole: halves of a few samples fit no law and judge none,
-// and the cut would only leave a block far smaller than the rest.
-std::vector<Block> with_contact_cut(const std::vector<Replay>& replays, const std::vector<Block>& blocks) {
-  std::vector<Block> out;
-  for (const Block& b : blocks) {
-    const Replay& r = replays[b.trace];
-    size_t contact = 0, fitted = 0;
-    for (size_t s = b.from; s < b.to; ++s) {
-      contact += fitted_in_contact(r, s) ? 1 : 0;
-      fitted += r.fitted[s] ? 1 : 0;
-    }
-    size_t cut = b.from, seen = 0, fitted_before = 0;
-    for (; cut < b.to && 2 * seen < contact; ++cut) {
-      seen += fitted_in_contact(r, cut) ? 1 : 0;
-      fitted_before += r.fitted[cut] ? 1 : 0;
-    }
-    if (contact < kMinContactCut || fitted_before < kMinContactCut || fitted - fitted_before < kMinContactCut) {
-      out.push_back(b);
-      continue;
-    }
-    out.push_back({b.trace, b.from, cut});
-    out.push_back({b.trace, cut, b.to});
-  }
-  return out;
-}
-
-size_t fitted_samples(const std::vector<Replay>& replays) {
-  size_t n = 0;
-  for (const Replay& r : replays) n += static_cast<size_t>(std::count(r.fitted.begin(), r.fitted.end(), true));
-  return n;
-}
-
-std::vector<Block> blocks_of(const std::vector<Replay>& replays) {
-  double fitted_all = 0, contact_all = 0;
-  for (const Replay& r : replays) {
-    for (size_t s = 0; s < r.t.size(); ++s) {
-      fitted_all += r.fitted[s] ? 1 : 0;
-      contact_all += fitted_in_contact(r, s) ? 1 : 0;
-    }
-  }
-  // Each sample's share of what can be judged: all of it adds up to 1.
-  const bool short_contact = contact_all > 0 && contact_all < static_cast<double>(kMinBlock);
-  if (short_contact) contact_all = 0;
-  const double halves = contact_all > 0 ? 2 : 1;
-  auto mass = [&](const Replay& r, size_t s) {
-    return ((r.fitted[s] ? 1 / fitted_all : 0.0) + (contact_all > 0 && fitted_in_contact(r, s) ? 1 / contact_all : 0.0)) /
-           halves;
-  };
-  std::vector<double> owns(replays.size(), 0.0);
-  std::vector<size_t> fitted(replays.size(), 0), counts(replays.size());
-  for (size_t i = 0; i < replays.size(); ++i) {
-    const Replay& r = replays[i];
-    for (size_t s = 0; s < r.t.size(); ++s) {
-      owns[i] += fitted_all > 0 ? mass(r, s) : 0.0;
-      fitted[i] += r.fitted[s] ? 1 : 0;
-    }
-    // What one trace alone shows is judged by folds fitted on the others
-    // alone where that trace is one block: a way up only it holds (one way
-    // up cannot tell a weight from a preload, and the held-out trace judged
-    // a wild guess: the tongs turned 90 deg in one trace of three,
-    // development seed 3140), or an inertia only its quick strokes excite
-    // (fitted on the slow traces as none, and the inertia that one trace
-    // of three showed read `unexplained`: development seed 6246, both
-    // engines). Each trace that holds enough is cut in two at least.
-    const size_t most = std::max<size_t>(1, fitted[i] / kMinBlock);
-    const auto share = static_cast<size_t>(std::lround(static_cast<double>(kBlocks) * owns[i]));
-    counts[i] = std::clamp<size_t>(share, std::min<size_t>(2, most), most);
-  }
-  std::vector<Block> out;
-  for (size_t i = 0; i < replays.size(); ++i) {
-    // A trace with nothing fitted (all of it the snap after a crack, or
-    // held still) is no block: a fold of it judges nothing, and the fold
-    // that leaves the others out has nothing to fit (development seed
-    // 7130, ODE: judged "over 2 folds (fitted samples: 0 228)", every fit
-    // invalid).
-    if (fitted[i] == 0 && fitted_all > 0) continue;
-    const Replay& r = replays[i];
-    const double own = owns[i];
-    const size_t blocks = counts[i];
-    // Cut where the running share passes each b / blocks of the trace's;
-    // a block left with fewer than kMinBlock fitted samples joins the next
-    // (the last joins the one before).
-    size_t from = 0, fitted_since = 0;
-    double seen = 0;
-    const size_t first = out.size();
-    for (size_t s = 0, b = 1; s < r.t.size() && b < blocks; ++s) {
-      seen += mass(r, s);
-      fitted_since += r.fitted[s] ? 1 : 0;
-      if (seen < own * static_cast<double>(b) / static_cast<double>(blocks)) continue;
-      ++b;
-      if (fitted_since < kMinBlock) continue;
-      out.push_back({i, from, s + 1});
-      from = s + 1;
-      fitted_since = 0;
-    }
-    size_t rest = 0;
-    for (size_t s = from; s < r.t.size(); ++s) rest += r.fitted[s] ? 1 : 0;
-    if (rest < kMinBlock && out.size() > first) {
-      out.back().to = r.t.size();
-    } else {
-      out.push_back({i, from, r.t.size()});
-    }
-  }
-  if (short_contact) out = with_contact_cut(replays, out);
-  return out;
-}
-
-std::vector<Replay> sliced(const std::vector<Replay>& replays, const std::vector<Block>& blocks) {
-  std::vector<Replay> out;
-  for (const Block& b : blocks) {
-    const Replay& r = replays[b.trace];
-    out.push_back(b.from == 0 && b.to == r.t.size() ? r : slice(r, b.from, b.to));
-  }
-  return out;
-}
 
 // The measurement's own noise, from the second differences of its fitted
 // samples (white_noise_of_second_differences: not moved by the few jumps
@@ -412,86 +208,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // cannot predict are left out for every set alike: the delay from a fit
   // of the latency alone on the whole traces decides how long after.
   const bool latency_asked = m.rig == Rig::lever && asked(EffectKind::sensor_latency);
-  double delay = 0;  // s, the late readings' (0: none left out)
-  // The readings left in bias that fit toward no delay, so it is fitted
-  // again on what the delay found leaves, until the delay holds.
-  if (latency_asked) {
-    // Friction flips with the motion, and a late sensor reads the flip
-    // late: fitted alone, the delay takes up some of a friction the file
-    // lacks (29 ms for a 50 ms sensor under 0.1 N*m of friction), and the
-    // readings it leaves out are not the late ones. So it is fitted with
-    // friction beside it where friction is in the library.
-    // A heavy arm caught at a stroke's start likewise: read late, its
-    // inertia's torque there was taken up by the delay, which then left
-    // in the readings of the catch (development seed 3085: the true
-    // inertia and 50 ms latency left 1.24 times the floor).
-    // A delay under one sampling step leaves out no reading but the
-    // first of each stretch: at the search's end, 0, or within a step of
-    // it, it says nothing of the delay, and it is fitted again with a
-    // damping beside it. On a spring a late sensor reads as a negative
-    // damping (tau k s^2 omega over the effort), so an effect the fit
-    // lacks can pull it to 0. It came out at 0 under a real damping and
-    // under a progressive spring (development seeds 6678 in ODE and 6293
-    // in both engines), and at 0.85 ms under a weight turned 90 deg
-    // (7062, ODE), each with a 50 ms sensor: the readings after each turn
-    // left in kept the true pair from the floor; fitted again, 42, 62
-    // and 40 ms. Only there: beside every fit the damping trades with the
-    // delay where the sensor is not late (64 and 52 ms for none,
-    // development seeds 6148 and 6442) and takes some of it where it is
-    // (14 ms for 50, 6371; 30 for 50 where the first fit found 5 ms,
-    // 6384). And the delay found so must earn its place beside the
-    // damping, on the readings it leaves in, by the training AICc as an
-    // effect earns its place in a set; else the two only trade (45 ms,
-    // and a damping that undoes it, for a sensor that is not late:
-    // strokes of 0.15 s between rests, tested) and the first delay stays.
-    // Not by a share of the RMSE too: what it cuts lies over the noise,
-    // and the true 50 ms of 7062 cut 2.1 %.
-    std::vector<EffectKind> late_with = {EffectKind::sensor_latency};
-    if (asked(EffectKind::pivot_friction)) late_with.push_back(EffectKind::pivot_friction);
-    if (asked(EffectKind::arm_inertia)) late_with.push_back(EffectKind::arm_inertia);
-    const std::vector<Replay> as_replayed = whole;
-    // The last fit, where it was made on the readings `delay` leaves in
-    // (the delay held); none where five fits did not settle it.
-    auto settle = [&](const std::vector<EffectKind>& with) -> std::optional<SetFit> {
-      for (int round = 0; round < kLateRounds; ++round) {
-        SetFit found = Fitter(model, whole, every, {}).fit(with);
-        if (round > 0 && std::abs(found.delay - delay) < kLateSettled) return found;
-        delay = found.delay;
-        whole = as_replayed;
-        leave_out_late_readings(whole, delay);
-      }
-      return std::nullopt;
-    };
-    settle(late_with);
-    double shortest_step = std::numeric_limits<double>::infinity();  // s, the traces' sampling
-    for (const Replay& r : as_replayed) {
-      if (r.step > 0) shortest_step = std::min(shortest_step, r.step);  // a one-sample trace has none
-    }
-    if (delay < shortest_step && asked(EffectKind::viscous_damping)) {
-      const double at_end = delay;
-      std::vector<EffectKind> damped(late_with.begin() + 1, late_with.end());
-      damped.push_back(EffectKind::viscous_damping);
-      late_with.push_back(EffectKind::viscous_damping);
-      const std::optional<SetFit> held = settle(late_with);
-      const Fitter left_in(model, whole, every, {});
-      const SetFit late = held ? *held : left_in.fit(late_with), not_late = left_in.fit(damped);
-      if (delay < at_end + kLateSettled || late.aicc > not_late.aicc - kAiccMargin) {
-        delay = at_end;
-        whole = as_replayed;
-        leave_out_late_readings(whole, delay);
-      }
-    }
-    // A delay that leaves too few readings for two blocks cannot itself be
-    // judged, nor anything else: the readings stay, and a late sensor is
-    // judged as any effect is. Quick strokes of 57 ms between turns, a
-    // damping read as 80 ms of delay, left none (development seed 6404,
-    // MuJoCo: `unexplained`, nothing to judge; the truth a damping and a
-    // weight).
-    if (fitted_samples(whole) < 2 * kMinBlock && fitted_samples(as_replayed) >= 2 * kMinBlock) {
-      delay = 0;
-      whole = as_replayed;
-    }
-  }
+  const double delay = latency_asked ? late_readings_left_out(model, whole, asked) : 0.0;  // s (0: none left out)
   std::vector<double> x_noise;  // each trace's motion sensor's
   for (const Replay& r : whole) x_noise.push_back(r.x_noise);
   const std::vector<Block> blocks = blocks_of(whole);

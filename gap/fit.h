@@ -182,4 +182,8 @@ class Fitter {
 // AICc of a least-squares fit: n ln(rss/n) + 2k + 2k(k+1)/(n-k-1).
 double aicc(double rss, size_t n, int k);
 
+// An effect earns its place in a set where, among other tests, it cuts the
+// training AICc by at least this much.
+inline constexpr double kAiccMargin = 10;
+
 }  // namespace afford
