@@ -205,8 +205,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     if (!alone.effects.empty()) release_held(whole, alone.effects.front().value[0]);
   }
   // Where a sensor may read late, its readings after a stretch the model
-  // cannot predict are left out for every set alike: the delay from a fit
-  // of the latency alone on the whole traces decides how long after.
+  // cannot predict are left out for every set alike: the delay fitted on
+  // the whole traces (late_sensor.h) decides how long after.
   const bool latency_asked = m.rig == Rig::lever && asked(EffectKind::sensor_latency);
   const double delay = latency_asked ? late_readings_left_out(model, whole, asked) : 0.0;  // s (0: none left out)
   std::vector<double> x_noise;  // each trace's motion sensor's

@@ -104,12 +104,13 @@ fs::path write_case(const fs::path& out, const Case& c, const std::vector<std::v
   return yaml;
 }
 
-fs::path play_and_write(const fs::path& out, const Case& c, const Reality& reality) {
+Played play_and_write(const fs::path& out, const Case& c, const Reality& reality) {
   std::vector<std::vector<Measured>> traces;
   for (const Drive& d : c.drives) traces.push_back(reality.play(c, d, d.noise_seed));
-  std::optional<PlatesLaw> plates;
-  if (c.tool.actee) plates = reality.plates(c);
-  return write_case(out, c, traces, plates);
+  Played played;
+  if (c.tool.actee) played.plates = reality.plates(c);
+  played.measurement = write_case(out, c, traces, played.plates);
+  return played;
 }
 
 }  // namespace gapcheck

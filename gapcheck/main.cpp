@@ -149,6 +149,7 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     Case c;
     Made m;
+    std::optional<PlatesLaw> plates;
     try {
       c = draw_case(source, out / "cases", seed,
                     [&reality](const Case& k, const Drive& d) { return reality->play(k, d, d.noise_seed); });
@@ -156,7 +157,9 @@ int main(int argc, char** argv) {
         m.measurement = out / "cases" / (c.name + ".yaml");
         if (!fs::is_regular_file(m.measurement)) throw std::runtime_error("no case " + m.measurement.string());
       } else {
-        m.measurement = play_and_write(out, c, *reality);
+        const Played played = play_and_write(out, c, *reality);
+        m.measurement = played.measurement;
+        plates = played.plates;
       }
     } catch (const std::exception& e) {
       // A set with a case left out would not be the set its seeds name.
@@ -170,8 +173,10 @@ int main(int argc, char** argv) {
     m.diagnosed.several_orientations = turns.size() > 1;
     made.push_back(m);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "%s: %s, %zu traces, %s in %.1f s\n", c.name.c_str(), c.group.c_str(), c.drives.size(),
+    std::fprintf(stderr, "%s: %s, %zu traces, %s in %.1f s", c.name.c_str(), c.group.c_str(), c.drives.size(),
                  again ? "drawn" : "played", seconds);
+    if (plates) std::fprintf(stderr, "; plates %.6g N/m (misfit %.3g N)", plates->stiffness, plates->rms_misfit);
+    std::fprintf(stderr, "\n");
   }
 
   // 2. Diagnose every case, the labels unseen.

@@ -166,7 +166,7 @@ TEST_F(GapcheckMujocoReality, TheSmallestSetThatExplainsMayLeaveASlightShape) {
   fs::create_directories(out / "cases");
   fs::create_directories(out / "labels");
   const gapcheck::Case c = gapcheck::draw_case(AFFORD_SOURCE_DIR, out / "cases", 6976, play);
-  const fs::path measurement = gapcheck::play_and_write(out, c, *reality);
+  const fs::path measurement = gapcheck::play_and_write(out, c, *reality).measurement;
   const afford::Diagnosis d = afford::diagnose(afford::load_measurement(measurement.string()));
   std::vector<std::string> named;
   for (const afford::EffectFit& e : d.effects) named.emplace_back(afford::manifest_of(e.kind).name);
