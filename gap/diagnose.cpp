@@ -1,21 +1,21 @@
 #include "diagnose.h"
 
 #include "blocks.h"
+#include "derivatives.h"
+#include "judge.h"
 #include "late_sensor.h"
+#include "per_trace.h"
 #include "sensor_gain.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <map>
-#include <optional>
 #include <random>
 
 namespace afford {
 namespace {
 
-constexpr double kMatched = 1.15;       // a held-out RMSE within this factor of the noise is the noise
 constexpr double kRealMargin = 0.05;    // an effect must cut the held-out RMSE by this fraction
 constexpr double kSeparated = 3;        // a runner-up this many standard errors worse is told apart
 constexpr double kNearlyAsFar = 0.9;    // or one that cuts the mean squared error by less than this share of the best's cut
@@ -59,42 +59,6 @@ std::vector<Replay> replay_with_input_noise(const Model& model, Measurement m, c
     for (double& v : m.traces[i][x]) v += deviation[i] * noise(random);
   }
   return sliced(m.rig == Rig::lever ? replay_lever(model, m) : replay_plates(model, m), blocks);
-}
-
-// The motion's noise that a fitted set passes into its prediction, at each
-// sample of each replay (N times the root of the sample's weight, as the
-// residuals are weighed; 0 where either replay is not fitted): the model
-// predicts from the measured angle, its rate and its acceleration, and
-// differentiating twice makes an arm's inertia pass the angle's noise on
-// many times over. The two predictions, from the motion as measured and
-// with as much noise again, differ by the noise's share.
-std::vector<std::vector<double>> noise_through(const Fitter& measured, const Fitter& noisier,
-                                               const std::vector<Replay>& a, const std::vector<Replay>& b,
-                                               const SetFit& set) {
-  std::vector<std::vector<double>> out;
-  for (size_t i = 0; i < a.size(); ++i) {
-    const std::vector<double> ea = measured.residual(set, i), eb = noisier.residual(set, i);
-    out.emplace_back(ea.size(), 0.0);
-    for (size_t s = 0; s < ea.size(); ++s) {
-      if (a[i].fitted[s] && b[i].fitted[s]) out.back()[s] = (ea[s] - eb[s]) * std::sqrt(a[i].weight[s]);
-    }
-  }
-  return out;
-}
-
-// Its RMS (N) over the samples both replays fit, weighed as the fits weigh them.
-double propagated_noise(const Fitter& measured, const Fitter& noisier, const std::vector<Replay>& a,
-                        const std::vector<Replay>& b, const SetFit& set) {
-  const std::vector<std::vector<double>> noise = noise_through(measured, noisier, a, b, set);
-  double sq = 0, weights = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    for (size_t s = 0; s < noise[i].size(); ++s) {
-      if (!a[i].fitted[s] || !b[i].fitted[s]) continue;
-      sq += noise[i][s] * noise[i][s];
-      weights += a[i].weight[s];
-    }
-  }
-  return weights > 0 ? std::sqrt(sq / weights) : 0.0;
 }
 
 std::string effects_text(const std::vector<EffectKind>& set) {
@@ -244,16 +208,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   std::vector<Replay> noisier = replay_with_input_noise(model, m, x_noise, blocks);
   for (size_t i = 0; i < noisier.size(); ++i) noisier[i].weight = replays[i].weight;
   const Fitter noisier_fitter(model, noisier, all, {});
-  // What the model cannot match better than: the effort's noise and the
-  // motion's, passed through the set's prediction.
-  auto floor_of = [&](const SetFit& f) {
-    return std::hypot(d.noise, propagated_noise(fitter, noisier_fitter, replays, noisier, f));
-  };
   std::vector<EffectKind> library = options.library.empty() ? fitter.candidates() : options.library;
   const std::vector<EffectKind> applicable = fitter.candidates();
   std::erase_if(library, [&](EffectKind k) { return std::find(applicable.begin(), applicable.end(), k) == applicable.end(); });
-  // Which held-out samples have the actee deflected, in the order score()
-  // lists them. An actee's stiffness passes the angle's
+  // Which held-out samples have the actee deflected, in the order a set's
+  // score lists them (judge.h). An actee's stiffness passes the angle's
   // noise into its prediction, so its samples weigh little: a gap there,
   // many times their noise, would be lost in the RMSE over every sample.
   // The actee's part is judged on its own. Between plates the actee is
@@ -282,94 +241,20 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     std::fill(judged_in_contact.begin(), judged_in_contact.end(), false);
     contact_samples = 0;
   }
-  // A set's parameters on every trace, its score on the folds, and its
-  // squared error at every held-out sample (to tell two sets apart).
-  struct Scored {
-    SetFit fit;
-    std::vector<double> sq;
-    // N, over the held-out samples in the actee's contact, each error
-    // scaled to the effort sensor's noise (times the root of its weight):
-    // pure noise gives the sensor's noise, however little the samples weigh.
-    double rmse_contact = 0;
-    // Its residual's whiteness test, once asked: the search asks it of
-    // the same set at several of its tests.
-    mutable std::optional<ResidualTest> residual_test;
-  };
-  auto score_anew = [&](const std::vector<EffectKind>& set) {
-    Scored out{fitter.fit(set), {}, 0.0, std::nullopt};
-    SetFit& f = out.fit;
-    double sq = 0, weights = 0;
-    size_t n = 0;
-    for (size_t k = 0; k < fold_fitters.size(); ++k) {
-      const SetFit g = fold_fitters[k].fit(set, &f);
-      f.valid = f.valid && g.valid;
-      sq += g.rmse_test * g.rmse_test * g.w_test;
-      weights += g.w_test;
-      n += g.n_test;
-      for (size_t i : judged[k]) {
-        const std::vector<double> e = fold_fitters[k].residual(g, i);
-        for (size_t s = 0; s < e.size(); ++s) {
-          if (replays[i].fitted[s]) out.sq.push_back(replays[i].weight[s] * e[s] * e[s]);
-        }
-      }
-    }
-    f.rmse_test = weights > 0 ? std::sqrt(sq / weights) : 0.0;
-    f.n_test = n;
-    f.w_test = weights;
-    double sq_contact = 0;
-    for (size_t j = 0; j < out.sq.size(); ++j) sq_contact += judged_in_contact[j] ? out.sq[j] : 0.0;
-    out.rmse_contact = contact_samples > 0 ? std::sqrt(sq_contact / static_cast<double>(contact_samples)) : 0.0;
-    return out;
-  };
-  // Each set is scored once: the selection below and the search for the
-  // smallest set that explains ask for many of the same.
-  std::map<std::vector<EffectKind>, Scored> scored_sets;
-  auto score = [&](const std::vector<EffectKind>& set) -> const Scored& {
-    auto found = scored_sets.find(set);
-    if (found == scored_sets.end()) found = scored_sets.emplace(set, score_anew(set)).first;
-    return found->second;
-  };
-
-  const Scored nominal_scored = score({});
+  Judge judge({replays, fitter, fold_fitters, judged, noisier, noisier_fitter, judged_in_contact, contact_samples,
+               d.noise});
+  const Scored nominal_scored = judge.score({});
   const SetFit& nominal = nominal_scored.fit;
   d.rmse_before = nominal.rmse_test;
-  // Within `factor` times the noise floor over every held-out sample, and
-  // over those in the actee's contact: at the floor (1), or matched to it
-  // within the tolerance of the noise's own estimate (kMatched).
-  auto within = [&](const Scored& f, double factor) {
-    const double floor = factor * floor_of(f.fit);
-    return f.fit.rmse_test <= floor && f.rmse_contact <= floor;
-  };
-  auto matched = [&](const Scored& f) { return within(f, kMatched); };
-  // A set's residual of every trace, each sample's in units of the effort
-  // sensor's noise (times the square root of its weight), so that the tests
-  // of structure and the phases' shares see the samples as the fits weigh
-  // them.
-  auto weighed_residual = [&](const SetFit& fit) {
-    std::vector<std::vector<double>> out;
-    for (size_t i = 0; i < replays.size(); ++i) {
-      out.push_back(fitter.residual(fit, i));
-      for (size_t s = 0; s < replays[i].t.size(); ++s) out.back()[s] *= std::sqrt(replays[i].weight[s]);
-    }
-    return out;
-  };
-  // A set's residual tested for whiteness, the noise its prediction
-  // carries by itself taken off (once a set: kept with its score).
-  auto whiteness_of = [&](const Scored& f) -> const ResidualTest& {
-    if (!f.residual_test) {
-      const std::vector<std::vector<double>> noise = noise_through(fitter, noisier_fitter, replays, noisier, f.fit);
-      f.residual_test = whiteness(replays, weighed_residual(f.fit), all, &noise);
-    }
-    return *f.residual_test;
-  };
-  const std::vector<std::vector<double>> before = weighed_residual(nominal);
+  const std::vector<std::vector<double>> before = judge.weighed_residual(nominal);
   // The nominal model matches to the noise when its held-out RMSE is at
   // the noise, or within kMatched of it (the noise's own estimate is not
   // exact) with a white residual. Within kMatched but structured is a
   // small effect over many samples, its RMSE near the noise but its shape
   // plain: the search asks whether a candidate explains it.
-  const bool nominal_within = matched(nominal_scored);
-  const bool nominal_matched = within(nominal_scored, 1.0) || (nominal_within && whiteness_of(nominal_scored).white);
+  const bool nominal_within = judge.matched(nominal_scored);
+  const bool nominal_matched =
+      judge.within(nominal_scored, 1.0) || (nominal_within && judge.whiteness_of(nominal_scored).white);
   // Effects added match once at the floor, or within the tolerance with
   // a white residual, where the nominal model was not. Where it was, the
   // gap is its structure, and what explains it leaves a white residual: a
@@ -381,11 +266,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // heavier than chi-square's: just over the point is not yet a shape (a
   // force sensor's gain error one way up is 1434 against 37.6).
   auto white_under = [&](const Scored& f) {
-    const ResidualTest& t = whiteness_of(f);
+    const ResidualTest& t = judge.whiteness_of(f);
     return t.q <= kStructured * t.threshold;
   };
   auto effects_match = [&](const Scored& f) {
-    return !nominal_within && (within(f, 1.0) || (matched(f) && white_under(f)));
+    return !nominal_within && (judge.within(f, 1.0) || (judge.matched(f) && white_under(f)));
   };
   // Where the nominal model was off, a set of one effect or two within
   // the noise's tolerance whose residual keeps a slight shape has
@@ -402,7 +287,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // the tolerance, where the shape is the gap: there only a white
   // residual explains it.
   auto leaves_a_slight_shape = [&](const Scored& f, size_t effects) {
-    return !nominal_within && effects <= 2 && matched(f) && whiteness_of(f).share < kSlightShape;
+    return !nominal_within && effects <= 2 && judge.matched(f) && judge.whiteness_of(f).share < kSlightShape;
   };
   // Each candidate is judged where it acts: an effect of the actee where
   // the jaws deflect it, the others over every sample.
@@ -430,7 +315,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     auto where = [&](const std::vector<double>& sq) { return contact ? in_contact_only(sq, judged_in_contact) : sq; };
     std::vector<EffectKind> others;
     for (const EffectFit& e : without.fit.effects) others.push_back(e.kind);
-    return matched(with) && white_under(with) && !effects_match(without) &&
+    return judge.matched(with) && white_under(with) && !effects_match(without) &&
            paired_t(where(with.sq), where(without.sq)) >= kSeparated && !adds_nothing_to(fitter, added, others);
   };
   Scored current_scored = nominal_scored;
@@ -475,7 +360,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
           std::vector<EffectKind> set = branch;
           set.push_back(k);
           if (std::any_of(tried.begin(), tried.end(), [&](const Tried& t) { return same_set(t.set, set); })) continue;
-          Scored f = score(set);
+          Scored f = judge.score(set);
           if (f.fit.valid) tried.push_back({std::move(f), set});
         }
       }
@@ -565,8 +450,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // the angle: development seed 6531, ODE). effects_match with the
       // residual white, its whiteness tested once: white is under twice
       // the point too.
-      if (!nominal_within && (within(current_scored, 1.0) ||
-                              (matched(current_scored) && whiteness_of(current_scored).white))) {
+      if (!nominal_within && (judge.within(current_scored, 1.0) ||
+                              (judge.matched(current_scored) && judge.whiteness_of(current_scored).white))) {
         break;
       }
     }
@@ -594,7 +479,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     for (EffectKind k : set) {
       std::vector<EffectKind> without = set;
       std::erase(without, k);
-      if (!earns_place(score(set), score(without), in_contact(k), k)) return false;
+      if (!earns_place(judge.score(set), judge.score(without), in_contact(k), k)) return false;
     }
     return true;
   };
@@ -635,16 +520,16 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // A set that misses the floor on every sample it is fitted to
       // misses it held out: only those that may explain are scored on
       // the folds (a sixth of the fits for the others).
-      if (!scored_sets.contains(set)) {
+      if (!judge.scored(set)) {
         const SetFit in_sample = fitter.fit(set);
-        if (!in_sample.valid || in_sample.rmse_train > kMatched * floor_of(in_sample)) continue;
+        if (!in_sample.valid || in_sample.rmse_train > kMatched * judge.floor_of(in_sample)) continue;
       }
-      const Scored& f = score(set);
+      const Scored& f = judge.score(set);
       if (short_of && paired_t(*short_of, f.sq) >= kSeparated) continue;
       if (f.fit.valid && explains(f, set.size(), slight_shape_explains) && each_earns(set)) explaining.push_back(&set);
     }
     auto error_of = [&](const std::vector<EffectKind>* set) {
-      const Scored& f = score(*set);
+      const Scored& f = judge.score(*set);
       return std::max(f.fit.rmse_test, f.rmse_contact);
     };
     std::stable_sort(explaining.begin(), explaining.end(),
@@ -665,10 +550,10 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       const std::vector<const std::vector<EffectKind>*> explaining =
           explaining_sets(size, forward_short ? &forward_sq : nullptr, true);
       if (explaining.empty()) continue;
-      const Scored& best = score(*explaining.front());
+      const Scored& best = judge.score(*explaining.front());
       branches = {*explaining.front()};
       for (size_t j = 1; j < explaining.size(); ++j) {
-        if (as_good_as(best, score(*explaining[j]))) branches.push_back(*explaining[j]);
+        if (as_good_as(best, judge.score(*explaining[j]))) branches.push_back(*explaining[j]);
       }
       chosen = branches.front();
       current_scored = best;
@@ -686,7 +571,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     std::vector<std::vector<EffectKind>> more;
     for (const std::vector<EffectKind>* set : explaining_sets(2, nullptr, false)) {
       const bool listed = std::any_of(branches.begin(), branches.end(), [&](const auto& b) { return same_set(b, *set); });
-      if (!listed && as_good_as(current_scored, score(*set))) more.push_back(*set);
+      if (!listed && as_good_as(current_scored, judge.score(*set))) more.push_back(*set);
     }
     if (!more.empty()) d.steps.push_back("  as good, among every pair that explains: " + sets_text(more));
     branches.insert(branches.end(), more.begin(), more.end());
@@ -770,7 +655,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // misfit gathers in a few stretches that the paired test's batches
       // cannot weigh (a preload to the noise against a gain leaving 1.55
       // times it, development seed 6172, both engines).
-      if (matched(current_scored) && std::sqrt(gain_mean) > kMatched * floor_of(nominal)) return false;
+      if (judge.matched(current_scored) && std::sqrt(gain_mean) > kMatched * judge.floor_of(nominal)) return false;
       return cut > 0 && was - gain_mean >= kNearlyAsFar * cut && paired_t(set_sq, gain_sq) < kSeparated;
     };
     gain_alike = std::abs(gain.gain) <= kMostGainError && alike_in(false) && (!contact || alike_in(true));
@@ -783,7 +668,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     }
   }
   d.effects = current.effects;
-  d.noise_through_model = floor_of(current);
+  d.noise_through_model = judge.floor_of(current);
   d.rmse_after = current.rmse_test;
   d.contact_samples = contact_samples;
   d.contact_before = nominal_scored.rmse_contact;
@@ -794,8 +679,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   const double now = d.shrink_in_contact ? d.contact_after : d.rmse_after;
   d.shrink = was > 0 ? 1 - now / was : 0.0;
 
-  const std::vector<std::vector<double>> after = weighed_residual(current);
-  d.residual = whiteness_of(current_scored);
+  const std::vector<std::vector<double>> after = judge.weighed_residual(current);
+  d.residual = judge.whiteness_of(current_scored);
   d.rig = m.rig;
   d.curves = held_out_curves(replays, fitter, nominal, fold_fitters, judged, chosen);
   what_it_follows(replays, after, &d.residual.follows, &d.residual.correlation);
@@ -827,7 +712,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // engine's contact by more than that where the rest is at the floor
   // (report seeds 1,004,730, 1,004,742 and 1,004,956, ODE, were
   // `unexplained` when it was).
-  const bool white_explains = d.residual.white && (matched(current_scored) || chosen.size() <= 2) &&
+  const bool white_explains = d.residual.white && (judge.matched(current_scored) || chosen.size() <= 2) &&
                               current.rmse_test <= kMatched * kMatched * d.noise_through_model;
   // The actee's contact is judged on its own. Within the noise's tolerance
   // there, no law of the actee may take up what it holds (earns_place), so
@@ -842,9 +727,9 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // test's point in it, development seed 6807, ODE, `unexplained` before).
   // Out of the contact there must be samples to judge, as anywhere.
   bool shape_only_in_contact = false;
-  if (contact_samples > 0 && !nominal_within && chosen.size() <= 2 && matched(current_scored) &&
+  if (contact_samples > 0 && !nominal_within && chosen.size() <= 2 && judge.matched(current_scored) &&
       !d.residual.white && current_scored.rmse_contact <= kMatched * d.noise) {
-    const std::vector<std::vector<double>> noise = noise_through(fitter, noisier_fitter, replays, noisier, current);
+    const std::vector<std::vector<double>> noise = judge.noise_through(current);
     d.out_of_contact = {true, whiteness(replays, after, all, &noise, Samples::out_of_contact)};
     const ResidualTest& t = d.out_of_contact.test;
     shape_only_in_contact = t.samples >= kMinBlock && t.q <= kStructured * t.threshold;
@@ -1003,69 +888,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
 
   // Unexplained over several traces: would each trace, fitted alone, be?
   if (d.verdict == Verdict::unexplained && m.traces.size() > 1 && !library.empty()) {
-    PerTrace& pt = d.per_trace;
-    // Each trace's own fit of a set, scored on it: the weighed RMSE over
-    // the traces, and whether each trace's is within `floor`.
-    std::vector<Fitter> own;
-    for (size_t i = 0; i < whole.size(); ++i) own.emplace_back(model, whole, std::vector<size_t>{i}, std::vector<size_t>{i});
-    struct Alone {
-      std::vector<SetFit> fits;
-      double rmse = 0;
-      bool valid = true;
-    };
-    auto alone = [&](const std::vector<EffectKind>& set) {
-      Alone a;
-      double sq = 0, weights = 0;
-      for (const Fitter& f : own) {
-        a.fits.push_back(f.fit(set));
-        const SetFit& b = a.fits.back();
-        a.valid = a.valid && b.valid;
-        sq += b.rmse_test * b.rmse_test * b.w_test;
-        weights += b.w_test;
-      }
-      a.valid = a.valid && weights > 0;
-      a.rmse = weights > 0 ? std::sqrt(sq / weights) : 0.0;
-      return a;
-    };
-    auto each_within = [&](const Alone& a, double floor) {
-      return std::all_of(a.fits.begin(), a.fits.end(),
-                         [&](const SetFit& b) { return b.rmse_test <= kMatched * floor; });
-    };
-    // The effect that leaves the least fitted to each trace alone, not the
-    // one the traces together want: a weight one way up and the other
-    // wants a preload of either sign, and together no preload cuts
-    // anything (a late sensor that cut nothing either was shown there,
-    // Gap.EachWayUpAWeightIsAPreloadOfItsOwn).
-    const Alone nominal_alone = alone({});
-    std::optional<Alone> best;
-    for (EffectKind k : library) {
-      Alone a = alone({k});
-      if (a.valid && (!best || a.rmse < best->rmse)) {
-        best = std::move(a);
-        pt.effect = k;
-      }
-    }
-    // The traces differ from one another only where each alone is at the
-    // floor and its nominal is not. Where a trace alone is not, the model
-    // misses; where each nominal is at the floor already, the gap is a
-    // shape only the traces together show. The report said the traces
-    // differed wherever this was computed: development seeds 7916 and
-    // 7974, ODE, where each trace's best effect alone left 9.2 and 1.9
-    // times the floor, and 7845, 0.99 times over the traces but not
-    // within the tolerance in each.
-    if (best && nominal_alone.valid) {
-      const SetFit on_blocks = fitter.fit({pt.effect});
-      pt.floor = on_blocks.valid ? floor_of(on_blocks) : d.noise;
-      pt.nominal_at_floor = each_within(nominal_alone, pt.floor);
-      pt.each_at_floor = each_within(*best, pt.floor);
-      for (const SetFit& b : best->fits) pt.first_parameter.push_back(b.effects.empty() ? 0.0 : b.effects.front().value[0]);
-      pt.rmse_nominal = nominal_alone.rmse;
-      pt.rmse_alone = best->rmse;
-      pt.computed = true;
-    }
+    auto floor_of = [&judge](const SetFit& f) { return judge.floor_of(f); };
+    d.per_trace = per_trace_fits(model, whole, library, fitter, floor_of, d.noise);
     // Each alone wants a power law: is its shape shared, with each
     // specimen's stiffness its own?
-    if (pt.computed && pt.effect == EffectKind::actee_compliance) {
+    if (d.per_trace.computed && d.per_trace.effect == EffectKind::actee_compliance) {
       d.specimens = specimen_shape(Fitter(model, whole, every, {}), whole);
     }
   }
@@ -1077,30 +904,14 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     d.by_force_after = d.effects.empty() ? d.by_force_before : replay_force(compile_with(m, d.effects), m);
   }
 
-  // Where: each phase's share of the squared residual.
-  double total_before = 0, total_after = 0;
-  std::array<PhaseShare, kPhases> shares{};
-  for (int p = 0; p < kPhases; ++p) shares[static_cast<size_t>(p)].phase = static_cast<Phase>(p);
-  for (size_t i = 0; i < replays.size(); ++i) {
-    for (size_t s = replays[i].history; s < replays[i].t.size(); ++s) {
-      PhaseShare& ps = shares[static_cast<size_t>(replays[i].phase[s])];
-      ++ps.samples;
-      ps.before += before[i][s] * before[i][s];
-      ps.after += after[i][s] * after[i][s];
-      total_before += before[i][s] * before[i][s];
-      total_after += after[i][s] * after[i][s];
-    }
-  }
-  for (PhaseShare& ps : shares) {
-    if (ps.samples == 0) continue;
-    ps.before = total_before > 0 ? ps.before / total_before : 0;
-    ps.after = total_after > 0 ? ps.after / total_after : 0;
+  // Where: each phase's share of the squared residual; after, as the
+  // second judgement with the turns' inertia found it where there was one.
+  d.phases = phase_shares(replays, before, after);
+  for (PhaseShare& ps : d.phases) {
     for (const PhaseShare& f : folded_phases) {
       if (f.phase == ps.phase) ps.after = f.after;
     }
-    d.phases.push_back(ps);
   }
-  std::sort(d.phases.begin(), d.phases.end(), [](const PhaseShare& a, const PhaseShare& b) { return a.before > b.before; });
   std::string follows;
   double corr = 0;
   what_it_follows(replays, before, &follows, &corr);

@@ -12,6 +12,8 @@
 #include "look_alikes.h"
 #include "force_replay.h"
 #include "measurement.h"
+#include "per_trace.h"
+#include "phases.h"
 #include "replay.h"
 #include "residual_tests.h"
 #include "specimens.h"
@@ -21,28 +23,6 @@ namespace afford {
 
 enum class Verdict { none, explained, ambiguous, unexplained };
 const char* verdict_name(Verdict v);
-
-struct PhaseShare {
-  Phase phase = Phase::at_rest;
-  size_t samples = 0;
-  double before = 0, after = 0;  // share of the squared residual, 0..1
-};
-
-
-// When one model does not fit the traces together: the best effect fitted
-// to each trace alone (in sample), to tell specimens that differ from one
-// another (each alone at the floor) from a model that misses (not even
-// every trace alone is), and both from a shape only the traces together
-// show (each trace's nominal at the floor already).
-struct PerTrace {
-  bool computed = false;
-  EffectKind effect = EffectKind::pivot_friction;
-  double rmse_nominal = 0, rmse_alone = 0;  // N, every trace, each under its own fit
-  double floor = 0;                         // N, the noise with the motion's through the effect
-  bool nominal_at_floor = false;            // every trace's nominal within the noise's tolerance of the floor
-  bool each_at_floor = false;               // every trace under its own fit within it
-  std::vector<double> first_parameter;      // SI, per trace
-};
 
 // One judged trace as the plots draw it: the main signal measured, as the
 // nominal model predicts it, and as the effects fitted on the other traces

@@ -186,4 +186,7 @@ double aicc(double rss, size_t n, int k);
 // training AICc by at least this much.
 inline constexpr double kAiccMargin = 10;
 
+// A held-out RMSE within this factor of the noise is the noise.
+inline constexpr double kMatched = 1.15;
+
 }  // namespace afford
