@@ -17,17 +17,10 @@ namespace afford {
 namespace {
 
 constexpr double kRealMargin = 0.05;    // an effect must cut the held-out RMSE by this fraction
-constexpr double kSeparated = 3;        // a runner-up this many standard errors worse is told apart
-constexpr double kNearlyAsFar = 0.9;    // or one that cuts the mean squared error by less than this share of the best's cut
 constexpr int kMaxEffects = 3;
 constexpr double kStructured = 2;       // a residual's whiteness statistic over this many times its 99 % point is a shape
 constexpr double kSlightShape = 0.05;   // a shape with less than this share of a matched residual's variance is slight
 constexpr size_t kFolds = 5;            // cross-validation folds, at most
-
-// A force sensor's gain error a look-alike may have, at most: a load
-// cell's calibration is off by percents; one that reads half again or
-// half as much is a wrong unit or channel, which the user sees at once.
-constexpr double kMostGainError = 0.5;
 
 // The measurement's own noise, from the second differences of its fitted
 // samples (white_noise_of_second_differences: not moved by the few jumps
@@ -103,15 +96,6 @@ std::vector<HeldOutCurve> held_out_curves(const std::vector<Replay>& replays, co
     }
   }
   return curves;
-}
-
-// The held-out squared errors of the samples judged in the actee's contact.
-std::vector<double> in_contact_only(const std::vector<double>& sq, const std::vector<bool>& judged_in_contact) {
-  std::vector<double> out;
-  for (size_t j = 0; j < sq.size(); ++j) {
-    if (judged_in_contact[j]) out.push_back(sq[j]);
-  }
-  return out;
 }
 
 }  // namespace
@@ -312,7 +296,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     if (!(was > 0) || with.fit.aicc > without.fit.aicc - kAiccMargin) return false;
     if (contact && was <= kMatched * d.noise) return false;
     if (1 - now / was >= kRealMargin) return true;
-    auto where = [&](const std::vector<double>& sq) { return contact ? in_contact_only(sq, judged_in_contact) : sq; };
+    auto where = [&](const std::vector<double>& sq) { return contact ? judge.in_contact_only(sq) : sq; };
     std::vector<EffectKind> others;
     for (const EffectFit& e : without.fit.effects) others.push_back(e.kind);
     return judge.matched(with) && white_under(with) && !effects_match(without) &&
@@ -393,7 +377,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // do not tell apart from it (not significantly worse, sample by
       // sample). The first alone is not enough where the best's cut lies
       // in a few samples: batch means that are mostly zero make a weak test.
-      auto where = [&](const std::vector<double>& sq) { return contact ? in_contact_only(sq, judged_in_contact) : sq; };
+      auto where = [&](const std::vector<double>& sq) { return contact ? judge.in_contact_only(sq) : sq; };
       const double was = rmse_in(current_scored, contact);
       auto cut_of = [&](const Scored& f) { return was * was - rmse_in(f, contact) * rmse_in(f, contact); };  // N^2
       const double cut = cut_of(best.scored);
@@ -627,38 +611,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // nothing the library holds is named.
   bool gain_alike = false;
   if (!chosen.empty()) {
-    std::vector<std::vector<double>> nominal_residual;
-    for (size_t i = 0; i < replays.size(); ++i) nominal_residual.push_back(fitter.residual(nominal, i));
-    const GainFit gain = held_out_gain(replays, nominal_residual, judged);
     const bool contact = contact_samples > 0 && std::any_of(chosen.begin(), chosen.end(), [](EffectKind k) {
                            return manifest_of(k).home == EffectHome::actee;
                          });
-    // Where the chosen set is judged (the contact, for an actee's law),
-    // and, since a gain scales every reading, over every sample too.
-    auto alike_in = [&](bool only_contact) {
-      std::vector<double> gain_sq = gain.sq, set_sq = current_scored.sq;
-      if (only_contact) {
-        gain_sq = in_contact_only(gain.sq, judged_in_contact);
-        set_sq = in_contact_only(current_scored.sq, judged_in_contact);
-      }
-      double gain_sum = 0;
-      for (double v : gain_sq) gain_sum += v;
-      const double gain_mean = only_contact ? gain_sum / static_cast<double>(contact_samples)
-                                          : (gain.weights > 0 ? gain_sum / gain.weights : 0.0);
-      auto mean_sq = [&](const Scored& f) {
-        return only_contact ? f.rmse_contact * f.rmse_contact : f.fit.rmse_test * f.fit.rmse_test;
-      };
-      const double was = mean_sq(nominal_scored);
-      const double cut = was - mean_sq(current_scored);
-      // A gain that leaves more than the noise's tolerance where the set
-      // is within it has not explained the gap as well, however its
-      // misfit gathers in a few stretches that the paired test's batches
-      // cannot weigh (a preload to the noise against a gain leaving 1.55
-      // times it, development seed 6172, both engines).
-      if (judge.matched(current_scored) && std::sqrt(gain_mean) > kMatched * judge.floor_of(nominal)) return false;
-      return cut > 0 && was - gain_mean >= kNearlyAsFar * cut && paired_t(set_sq, gain_sq) < kSeparated;
-    };
-    gain_alike = std::abs(gain.gain) <= kMostGainError && alike_in(false) && (!contact || alike_in(true));
+    const GainAlike gain = gain_alike_of(judge, nominal_scored, current_scored, contact);
+    gain_alike = gain.as_good;
     if (gain_alike) {
       d.gain_alike = gain.gain;
       std::snprintf(line, sizeof line,

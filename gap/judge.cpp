@@ -74,6 +74,14 @@ const ResidualTest& Judge::whiteness_of(const Scored& f) const {
   return *f.residual_test;
 }
 
+std::vector<double> Judge::in_contact_only(const std::vector<double>& sq) const {
+  std::vector<double> out;
+  for (size_t j = 0; j < sq.size(); ++j) {
+    if (data_.judged_in_contact[j]) out.push_back(sq[j]);
+  }
+  return out;
+}
+
 const Scored& Judge::score(const std::vector<EffectKind>& set) {
   auto found = sets_.find(set);
   if (found == sets_.end()) found = sets_.emplace(set, score_anew(set)).first;

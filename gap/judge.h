@@ -47,6 +47,13 @@ struct JudgedData {
   double noise = 0;            // N, the effort's own
 };
 
+// A runner-up this many standard errors worse than the best is told apart
+// from it (the paired test over the held-out samples).
+inline constexpr double kSeparated = 3;
+// Or one that cuts the mean squared error by less than this share of the
+// best's cut.
+inline constexpr double kNearlyAsFar = 0.9;
+
 class Judge {
  public:
   explicit Judge(const JudgedData& data) : data_(data) {}
@@ -72,6 +79,10 @@ class Judge {
   // The residual tested for whiteness, the noise its prediction carries
   // by itself taken off (once a set: kept with its score).
   const ResidualTest& whiteness_of(const Scored& f) const;
+  // Of the held-out squared errors `sq` (as Scored::sq lists them), those
+  // in the actee's contact.
+  std::vector<double> in_contact_only(const std::vector<double>& sq) const;
+  const JudgedData& data() const { return data_; }
 
  private:
   Scored score_anew(const std::vector<EffectKind>& set) const;

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "judge.h"
 #include "replay.h"
 
 namespace afford {
@@ -26,5 +27,17 @@ struct GainFit {
 // fold, each judged replay's fitted samples in order.
 GainFit held_out_gain(const std::vector<Replay>& replays, const std::vector<std::vector<double>>& residual,
                       const std::vector<std::vector<size_t>>& judged);
+
+// Whether one gain explains the gap as well as `set`, judged as a
+// runner-up is judged: it cuts the held-out error of the nominal model
+// nearly as far, and the held-out samples do not tell it from the set.
+// Where the set is judged (the actee's contact, `contact`, for an actee's
+// law) and, since a gain scales every reading, over every sample too.
+// A gain beyond what a calibration may be off by is no look-alike.
+struct GainAlike {
+  double gain = 0;  // the relative error of the reading (+0.06: 6 % high)
+  bool as_good = false;
+};
+GainAlike gain_alike_of(const Judge& judge, const Scored& nominal, const Scored& set, bool contact);
 
 }  // namespace afford
