@@ -683,9 +683,16 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // 0.1 % from the truth, white out of the contact, Q 7.6 times the
   // test's point in it, development seed 6807, ODE, `unexplained` before).
   // Out of the contact there must be samples to judge, as anywhere.
+  // So too where the nominal model was within the tolerance and nothing
+  // took up its shape, clear and more than slight: white out of the
+  // contact, the tool is its nominal self and the shape is the measured
+  // law's (an effect-free nutcracker's light squeeze, 5.4 % of the
+  // variance shaped, the contact 1.07 times the noise, development seed
+  // 7316, MuJoCo, `unexplained` before).
+  const bool nominal_shape_clear = d.residual.q > kStructured * d.residual.threshold && d.residual.share >= kSlightShape;
   bool shape_only_in_contact = false;
-  if (contact_samples > 0 && !nominal_within && chosen.size() <= 2 && judge.matched(current_scored) &&
-      !d.residual.white && current_scored.rmse_contact <= kMatched * d.noise) {
+  if (contact_samples > 0 && (nominal_within ? !nominal_matched && chosen.empty() && nominal_shape_clear : chosen.size() <= 2) &&
+      judge.matched(current_scored) && !d.residual.white && current_scored.rmse_contact <= kMatched * d.noise) {
     const std::vector<std::vector<double>> noise = judge.noise_through(current);
     d.out_of_contact = {true, whiteness(replays, after, all, &noise, Samples::out_of_contact)};
     const ResidualTest& t = d.out_of_contact.test;
@@ -709,13 +716,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
              "measure longer, or slower, or more traces");
   } else if (nominal_matched) {
     d.verdict = Verdict::none;
-  } else if (chosen.empty() && nominal_within &&
-             (d.residual.q <= kStructured * d.residual.threshold || d.residual.share < kSlightShape)) {
+  } else if (chosen.empty() && nominal_within && (!nominal_shape_clear || shape_only_in_contact)) {
     // The nominal model's residual was within the tolerance but over the
     // whiteness test's point, so the library was searched, and nothing in
     // it took the structure up. Judged as any set's residual is judged at
-    // the end (no clear shape under kStructured times the point, or a
-    // slight shape), it shows no gap: `none`, not a gap nobody can name
+    // the end (no clear shape under kStructured times the point, a slight
+    // shape, or a shape in the actee's contact alone), it shows no gap:
+    // `none`, not a gap nobody can name
     // (MuJoCo's effect-free nutcrackers at 1.01 and 1.05 times the floor,
     // Q 1.45 times the point, development seeds 3219 and 3225; an
     // effect-free press at 1.0 times the floor, its actee's law misfitting
@@ -726,11 +733,18 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     if (d.residual.q <= kStructured * d.residual.threshold) {
       d.steps.push_back("  nothing cuts it, and the nominal's residual is within the noise's tolerance with no clear "
                         "shape (under twice the whiteness test's point): no gap shown");
-    } else {
+    } else if (d.residual.share < kSlightShape) {
       std::snprintf(line, sizeof line,
                     "  nothing cuts it, and the nominal's residual is within the noise's tolerance, keeping a slight "
                     "shape: %.1f %% of its variance (under %.0f %%): no gap shown",
                     100 * d.residual.share, 100 * kSlightShape);
+      d.steps.push_back(line);
+    } else {
+      std::snprintf(line, sizeof line,
+                    "  nothing cuts it, and the nominal's residual is within the noise's tolerance, its shape in the "
+                    "actee's contact, %.3g times the sensor's noise there; out of the contact Q = %.1f, under twice "
+                    "the point %.1f: no gap shown",
+                    d.contact_after / d.noise, d.out_of_contact.test.q, d.out_of_contact.test.threshold);
       d.steps.push_back(line);
     }
   } else if (d.folds < 2) {

@@ -1233,6 +1233,25 @@ TEST(GapDesigns, AShadeOfMisfitInALightSqueezeIsNotLeftForTheToolsEffect) {
   EXPECT_THAT(report_json(shade_of_misfit(0.02)), ::testing::HasSubstr("\"out_of_contact\":null"));
 }
 
+TEST(GapDesigns, AShadeOfMisfitThatShapesTheWholeResidualIsNoGap) {
+  // The shade of the tests above (e = 0.02), opening only 1.5 deg from
+  // the touch, and no effect at all. The nominal model is within the
+  // noise's tolerance, but over thousands of samples the shade shapes
+  // the whole residual past a slight shape (over 5 % of its variance);
+  // nothing in the library takes it up. Out of the contact the residual
+  // is white: the tool is as its file says, and the shape is the
+  // measured law's. `none`, not `unexplained` (an effect-free
+  // nutcracker's light squeeze, 5.4 % shaped, the contact 1.07 times the
+  // noise, development seed 7316, MuJoCo).
+  const Diagnosis d = shade_of_misfit(0.02, 0, 1.5 * kDeg);
+  ASSERT_GT(d.residual.share, 0.05) << report_text(d);  // the design: more than a slight shape
+  ASSERT_GT(d.residual.q, 2 * d.residual.threshold) << report_text(d);
+  EXPECT_EQ(d.verdict, Verdict::none) << report_text(d);
+  ASSERT_TRUE(d.out_of_contact.computed) << report_text(d);
+  EXPECT_LT(d.out_of_contact.test.q, 2 * d.out_of_contact.test.threshold) << report_text(d);
+  EXPECT_THAT(report_text(d), ::testing::HasSubstr("its shape in the actee's contact"));
+}
+
 // The hazelnut squeezed along `motion` and read by a force sensor `late`
 // s late: the effort of t - late, linear between samples as a sampled
 // sensor's memory is; the angle of t. No other effect.
