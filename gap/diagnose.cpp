@@ -689,10 +689,12 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // law's (an effect-free nutcracker's light squeeze, 5.4 % of the
   // variance shaped, the contact 1.07 times the noise, development seed
   // 7316, MuJoCo, `unexplained` before).
-  const bool nominal_shape_clear = d.residual.q > kStructured * d.residual.threshold && d.residual.share >= kSlightShape;
+  // With nothing chosen, current_scored is the nominal's.
+  const bool nominal_shape_clear = chosen.empty() && !white_under(current_scored) && d.residual.share >= kSlightShape;
+  const bool asks_contact = nominal_within ? !nominal_matched && nominal_shape_clear : chosen.size() <= 2;
   bool shape_only_in_contact = false;
-  if (contact_samples > 0 && (nominal_within ? !nominal_matched && chosen.empty() && nominal_shape_clear : chosen.size() <= 2) &&
-      judge.matched(current_scored) && !d.residual.white && current_scored.rmse_contact <= kMatched * d.noise) {
+  if (contact_samples > 0 && asks_contact && judge.matched(current_scored) && !d.residual.white &&
+      current_scored.rmse_contact <= kMatched * d.noise) {
     const std::vector<std::vector<double>> noise = judge.noise_through(current);
     d.out_of_contact = {true, whiteness(replays, after, all, &noise, Samples::out_of_contact)};
     const ResidualTest& t = d.out_of_contact.test;
