@@ -7,9 +7,6 @@
 namespace afford {
 namespace {
 
-constexpr double kWindow = 0.025;  // s, each side
-constexpr int kDegree = 6;
-
 // The polynomial's design over an evenly spaced window of 2m + 1 samples,
 // times scaled by the half width h = m dt for conditioning.
 Eigen::MatrixXd even_design(size_t m, int degree) {
@@ -73,13 +70,15 @@ double sample_step(const std::vector<double>& t) {
   return span / static_cast<double>(count);
 }
 
-Derivatives local_derivatives(const std::vector<double>& t, const std::vector<double>& y) {
+Derivatives local_derivatives(const std::vector<double>& t, const std::vector<double>& y, double window,
+                              int wanted_degree) {
   const size_t n = t.size();
   const double dt = sample_step(t);
   // At least enough samples each side for the polynomial, at most the trace.
-  const size_t wanted = std::max<size_t>(kDegree / 2 + 1, static_cast<size_t>(std::lround(kWindow / dt)));
+  const size_t wanted =
+      std::max<size_t>(static_cast<size_t>(wanted_degree / 2 + 1), static_cast<size_t>(std::lround(window / dt)));
   const size_t m = std::min(wanted, (n - 1) / 2);
-  const int degree = static_cast<int>(std::min<size_t>(kDegree, 2 * m));
+  const int degree = static_cast<int>(std::min<size_t>(static_cast<size_t>(wanted_degree), 2 * m));
   Derivatives d;
   d.rate.resize(n);
   d.accel.resize(n);
@@ -102,6 +101,7 @@ Derivatives local_derivatives(const std::vector<double>& t, const std::vector<do
   const Eigen::MatrixXd cov = (a.transpose() * a).inverse();
   const Eigen::MatrixXd even = cov * a.transpose();  // coefficients = even * window
   d.rate_noise_gain = degree >= 1 ? std::sqrt(cov(1, 1)) / even_h : 0.0;
+  d.accel_noise_gain = degree >= 2 ? 2 * std::sqrt(cov(2, 2)) / (even_h * even_h) : 0.0;
   // What the polynomial leaves of the window: (I - A (A'A)^-1 A') b; pure
   // noise leaves (w - degree - 1) / w of its variance.
   const Eigen::MatrixXd leaves = Eigen::MatrixXd::Identity(w, w) - a * even;

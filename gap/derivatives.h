@@ -16,6 +16,7 @@ struct Derivatives {
   size_t half_width = 0;      // samples each side of the fit: nearer the ends it is one-sided
   int degree = 0;             // the polynomial's
   double rate_noise_gain = 0; // the rate's noise per unit of y's (white) noise, 1/s, inside
+  double accel_noise_gain = 0;  // the acceleration's, 1/s^2, inside
   // The RMS of y about the polynomial over each sample's window, y's unit:
   // white noise of deviation s leaves about s * misfit_noise_gain; much
   // more is motion the polynomial cannot follow (a ringing faster than the
@@ -53,7 +54,14 @@ constexpr double kRecordedApart = 10;
 // apart had a mean step a tenth too long, and every step read as uneven.
 double sample_step(const std::vector<double>& t);
 
-// `t` increasing, the same length as `y`, at least 2 samples.
-Derivatives local_derivatives(const std::vector<double>& t, const std::vector<double>& y);
+// The window every rate starts from: +-25 ms, degree 6 (above).
+constexpr double kNarrowWindow = 0.025;  // s, each side
+constexpr int kNarrowDegree = 6;
+
+// `t` increasing, the same length as `y`, at least 2 samples; `window`
+// s each side, the polynomial of `degree` (at most twice the samples
+// each side).
+Derivatives local_derivatives(const std::vector<double>& t, const std::vector<double>& y,
+                              double window = kNarrowWindow, int degree = kNarrowDegree);
 
 }  // namespace afford

@@ -77,6 +77,28 @@ TEST(Derivatives, TheRatesNoiseIsTheReportedGainTimesTheSignals) {
   EXPECT_NEAR(std::sqrt(sq / static_cast<double>(n)), d.rate_noise_gain * 1e-4, 0.05 * d.rate_noise_gain * 1e-4);
 }
 
+TEST(Derivatives, ALinesBendOverTenMillisecondsPassesTheNoiseWorkedOutByHand) {
+  // Degree 2 over j = -10..10 samples of 1 ms: the rate is sum(j y_j) /
+  // (dt sum j^2), sum j^2 = 770, its noise gain 1 / (1e-3 sqrt 770) =
+  // 36.04 s^-1; the acceleration is 2 c2 / dt^2 with c2 = sum((j^2 -
+  // 770/21) y_j) / sum((j^2 - 770/21)^2), that sum 2 * 25333 - 770^2 / 21
+  // = 22433.3, its gain 2 / (1e-6 sqrt 22433.3) = 13353 s^-2. A parabola
+  // it follows exactly: y = 1 + 2 t - 5 t^2, y' = 2 - 10 t, y'' = -10.
+  const std::vector<double> t = times(200, 1e-3);
+  std::vector<double> y;
+  for (double s : t) y.push_back(1 + 2 * s - 5 * s * s);
+  const Derivatives d = local_derivatives(t, y, 0.01, 2);
+  EXPECT_EQ(d.half_width, 10u);
+  EXPECT_EQ(d.degree, 2);
+  EXPECT_NEAR(d.rate_noise_gain, 1 / (1e-3 * std::sqrt(770.0)), 1e-9);
+  EXPECT_NEAR(d.accel_noise_gain, 2 / (1e-6 * std::sqrt(2 * 25333.0 - 770.0 * 770.0 / 21)), 1e-6);
+  for (size_t i = 0; i < t.size(); i += 13) {
+    EXPECT_NEAR(d.rate[i], 2 - 10 * t[i], 1e-9) << t[i];
+    EXPECT_NEAR(d.accel[i], -10, 1e-6) << t[i];
+    EXPECT_NEAR(d.misfit[i], 0, 1e-12) << t[i];
+  }
+}
+
 TEST(Derivatives, AShortOrCoarseTraceStillGetsAFit) {
   // 100 Hz: +-25 ms is under 4 samples, so the fit takes 4 each side.
   const std::vector<double> t = times(60, 1e-2);
