@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "derivatives.h"
+#include "resolved_motion.h"
 #include "smooth_derivative.h"
 #include "state.h"
 #include "terms.h"
@@ -16,10 +17,7 @@ constexpr double kReversalSpeed = 0.2;  // of the peak speed: a reversal lasts u
 constexpr double kLimitBand = 1e-3;      // rad: this near an angle limit counts as at it
 constexpr double kSignWidth = 1e-3;      // rad/s: friction's sign turns over this speed
 constexpr double kHeldBand = 0.1;        // friction's band below this share of a sample's noise does not matter
-constexpr double kUnresolved = 2;        // a window's misfit this many times its noise's: the motion is not resolved
 constexpr double kDropTime = 0.02;       // s: a crack drops the actee's force within this
-constexpr double kShortWindow = 0.01;    // s each side: where the narrow window cannot follow the motion
-constexpr int kShortDegree = 2;
 
 // x, its rate and acceleration, and their noise (white_noise), no finer
 // than the printed `resolution` (rad or m), which a noise-free trace
@@ -37,103 +35,6 @@ Derivatives differentiate(Replay& r, double resolution) {
   r.rate = std::move(v.value);
   r.accel = std::move(a.value);
   return d;
-}
-
-// The samples whose window the polynomial cannot follow: it leaves more
-// than kUnresolved times what the noise alone would, in the angle (`d`:
-// a ringing, a snap) or in the measured effort (`e`: a ringing below the
-// angle's noise still moves the effort through the arm's inertia, A w^2
-// times it). A noise's RMS over a window of some 50 samples is known to
-// a tenth. The effort is looked at less what the nominal model predicts
-// from the angle alone (`effort_left`, N): a stiff actee's law turns the
-// jaws' touch into a kink of the effort that the angle explains, which is
-// not motion the samples miss. Its noise (`effort_variance`, N^2, sample
-// by sample) is the sensor's and the angle's through that prediction.
-// A misfit marks its window's middle; what it cannot follow lies
-// somewhere in the window, and a ringing's tail decays past it: the
-// whole window is left out.
-std::vector<bool> misfitting(const Derivatives& d, const Derivatives& e, double x_noise,
-                             const std::vector<double>& effort_variance) {
-  const double allowed = kUnresolved * x_noise * d.misfit_noise_gain;
-  const size_t n = d.misfit.size(), m = d.half_width;
-  // The noise's variance summed up to each sample: its mean over a window.
-  std::vector<double> summed(n + 1, 0.0);
-  for (size_t i = 0; i < n; ++i) summed[i + 1] = summed[i] + effort_variance[i];
-  std::vector<bool> out(n, false);
-  for (size_t i = 0; i < n; ++i) {
-    const size_t from = i >= m ? i - m : 0, to = std::min(n - 1, i + m);
-    const double variance = (summed[to + 1] - summed[from]) / static_cast<double>(to + 1 - from);
-    const double allowed_effort = kUnresolved * std::sqrt(variance) * e.misfit_noise_gain;
-    if (d.misfit[i] <= allowed && e.misfit[i] <= allowed_effort) continue;
-    for (size_t j = from; j <= to; ++j) out[j] = true;
-  }
-  return out;
-}
-
-// The samples whose window (`m` samples each side) reaches across the
-// break (a kink no polynomial follows), and the free samples whose window
-// reaches into the actee's contact. Those are left out alone: as the jaws
-// touch or leave it the force on the arm changes at once, a hand that
-// drives the arm answers with a jolt, and the window smears that jolt's
-// acceleration over the free samples beside it. Its misfit is diluted
-// among the window's and hidden in the contact's noise (the actee's
-// stiffness passes the angle's noise on). A press leaving its actee left
-// 10 times the noise in the free samples within 25 ms of it, 0.03 N
-// elsewhere (development seeds 6159 and 6471, ODE).
-std::vector<bool> beside_contact_or_break(const Replay& r, size_t m, size_t break_at) {
-  const size_t n = r.t.size();
-  // Contact samples counted up to each sample: whether a window holds any.
-  std::vector<size_t> touching(n + 1, 0);
-  for (size_t i = 0; i < n; ++i) touching[i + 1] = touching[i] + (r.deflection[i] > 0 ? 1 : 0);
-  std::vector<bool> out(n, false);
-  for (size_t i = 0; i < n; ++i) {
-    const size_t from = i >= m ? i - m : 0, to = std::min(n - 1, i + m);
-    if (r.deflection[i] <= 0 && touching[to + 1] > touching[from]) out[i] = true;
-    const bool across_break = break_at != SIZE_MAX && i + m >= break_at && i <= break_at + m;
-    if (across_break) {
-      for (size_t j = from; j <= to; ++j) out[j] = true;
-    }
-  }
-  return out;
-}
-
-// The samples the narrow window cannot follow (above), but for those a
-// shorter, plainer one follows: strokes that start and stop every 0.1 s
-// put a kink of the angle within 25 ms of every sample, and each misfit
-// spreads over its window, so that no sample was left (development seed
-// 8920, a press stroking between its stops after the crack, ODE: all its
-// trace left out). A line's bend (degree 2) over +-10 ms passes about as
-// much of the angle's noise as the narrow window and follows constant
-// speeds and accelerations between the kinks; where it follows the
-// motion, its rates replace the narrow window's (`r`'s rates and their
-// noise; `rescued` says where), but only where its rate is no noisier
-// than the one it replaces: beside a slow turn, where the rate had taken
-// a window eight times as wide, the plain window's rate passed 0.2 N of
-// the angle's noise on through a damping the file lacked, ten times the
-// sensor's, and a late sensor was named to dodge it (tested).
-// `effort_left` and `effort_variance` as for misfitting().
-std::vector<bool> unresolved(const Derivatives& d, Replay& r, const std::vector<double>& effort_left,
-                             const std::vector<double>& effort_variance, std::vector<bool>& rescued) {
-  const size_t n = r.t.size();
-  rescued.assign(n, false);
-  std::vector<bool> out = misfitting(d, local_derivatives(r.t, effort_left), r.x_noise, effort_variance);
-  const std::vector<bool> beside = beside_contact_or_break(r, d.half_width, r.break_at);
-  if (std::find(out.begin(), out.end(), true) != out.end()) {
-    const Derivatives plain = local_derivatives(r.t, r.x, kShortWindow, kShortDegree);
-    const std::vector<bool> plain_out =
-        misfitting(plain, local_derivatives(r.t, effort_left, kShortWindow, kShortDegree), r.x_noise, effort_variance);
-    for (size_t i = 0; i < n; ++i) {
-      if (!out[i] || plain_out[i] || beside[i] || plain.rate_noise_gain * r.x_noise > r.rate_noise[i]) continue;
-      out[i] = false;
-      rescued[i] = true;
-      r.rate[i] = plain.rate[i];
-      r.accel[i] = plain.accel[i];
-      r.rate_noise[i] = plain.rate_noise_gain * r.x_noise;
-      r.accel_noise[i] = plain.accel_noise_gain * r.x_noise;
-    }
-  }
-  for (size_t i = 0; i < n; ++i) out[i] = out[i] || beside[i];
-  return out;
 }
 
 // Where the actee gave way in a trace without a `broken` column: its
@@ -427,12 +328,6 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
     if (r.break_at >= n) r.break_at = SIZE_MAX;
     std::vector<bool> at_limit(n);
     std::vector<double> from_angle(n);  // N*m: the nominal's prediction from the angle alone, no rates
-    // Coulomb friction against the motion; a smooth sign near rest, where
-    // the motion alone cannot say which way friction holds.
-    auto nominal_at = [&](size_t i) {
-      const double friction = -model.friction_torque * smooth_sign(r.rate[i]);
-      return from_angle[i] + friction - model.damping * r.rate[i] - model.arm_inertia * r.accel[i];
-    };
     for (size_t i = 0; i < n; ++i) {
       const double theta = r.x[i];
       r.measured[i] = trace[Signal::effort_force][i] * b;
@@ -452,7 +347,6 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       }
       from_angle[i] = spring.linear + spring.preload + spring.progressive + actee_force * a +
                       g_cos * std::cos(theta) + g_sin * std::sin(theta);
-      r.nominal[i] = nominal_at(i);
       // The actee's torque F(a (theta_c - theta)) a turns by -F' a^2 per radian.
       r.slope[i] = spring.slope - slope * a * a - g_cos * std::sin(theta) + g_sin * std::cos(theta);
       at_limit[i] = theta <= model.theta_min + kLimitBand || theta >= model.theta_max - kLimitBand;
@@ -461,11 +355,10 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
         r.actee_nominal.push_back(actee_force);
       }
     }
-    // The sensor reports the effort of `delay` ago.
+    // A late sensor reports the effort of `delay` ago.
     const bool late = model.sensor_latency > 0;
-    const std::vector<double> from_angle_late = late ? delayed(r.t, from_angle, model.sensor_latency, r.step)
-                                                     : std::vector<double>();
-    const std::vector<double>& from_angle_read = late ? from_angle_late : from_angle;
+    const std::vector<double> from_angle_read =
+        late ? delayed(r.t, from_angle, model.sensor_latency, r.step) : from_angle;
     const std::vector<double>& effort = trace[Signal::effort_force];
     const double effort_noise = std::max(white_noise(effort), r.resolution);
     std::vector<double> effort_left(n), effort_variance(n);
@@ -474,10 +367,13 @@ std::vector<Replay> replay_lever(const Model& model, const Measurement& m) {
       const double through = r.slope[i] * r.x_noise / b;  // N: the angle's noise in that prediction
       effort_variance[i] = effort_noise * effort_noise + through * through;
     }
-    std::vector<bool> rescued;
-    const std::vector<bool> blurred = unresolved(d, r, effort_left, effort_variance, rescued);
+    const std::vector<bool> blurred = unresolved(d, r, effort_left, effort_variance);
+    // The prediction, from the rates unresolved() leaves. Coulomb friction
+    // against the motion; a smooth sign near rest, where the motion alone
+    // cannot say which way friction holds.
     for (size_t i = 0; i < n; ++i) {
-      if (rescued[i]) r.nominal[i] = nominal_at(i);
+      const double friction = -model.friction_torque * smooth_sign(r.rate[i]);
+      r.nominal[i] = from_angle[i] + friction - model.damping * r.rate[i] - model.arm_inertia * r.accel[i];
     }
     if (late) r.nominal = delayed(r.t, r.nominal, model.sensor_latency, r.step);
     // The snap as the actee gives way lasts until the polynomial follows
