@@ -1086,11 +1086,11 @@ void expect_friction_after_the_crack(const std::string& name, const std::functio
 
 TEST(GapDesigns, AToolThatSlamsShutAtTheCrackAndStrokesBetweenStopsIsJudgedAfterIt) {
   // Rests of 0.1 s and strokes of 0.15 s: each stroke's start and end is
-  // a kink of the angle and a step of the effort that no polynomial
-  // follows, which leaves some 50 resolved samples in each stroke's
-  // middle, never a whole window of them in a row. Those strokes are the
-  // tool alone, to be judged (a press that slammed shut at the crack,
-  // development seed 3212, left out all of it).
+  // a kink of the angle and a step of the effort that the narrow window
+  // follows in some 60 samples of each stroke's middle, never a whole
+  // window of them in a row (the plainer window below follows some 120).
+  // Those strokes are the tool alone, to be judged (a press that slammed
+  // shut at the crack, development seed 3212, left out all of it).
   expect_friction_after_the_crack("slam", slam_then_strokes(0.1, 0.15));
 }
 
