@@ -29,9 +29,10 @@ namespace afford {
 // and accelerations between the kinks. Where it follows the motion, its
 // rates replace r's (and their noise), but only where its rate is no
 // noisier than the one it replaces: beside a slow turn, where the rate
-// had taken a window eight times as wide, the plain window's rate passed
-// 0.2 N of the angle's noise on through a damping the file lacked, ten
-// times the sensor's, and a late sensor was named to dodge it (tested).
+// had taken the +-200 ms window, twenty times as wide, the plain window's
+// rate passed 0.2 N of the angle's noise on through a damping the file
+// lacked, ten times the sensor's, and a late sensor was named to dodge it
+// (tested).
 std::vector<bool> unresolved(const Derivatives& d, Replay& r, const std::vector<double>& effort_left,
                              const std::vector<double>& effort_variance);
 
