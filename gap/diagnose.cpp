@@ -585,6 +585,15 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // it takes none. Where it alone leaves its range, both at once still
     // split the part they share if its file value has room to move its way.
     const bool one_and_one = d.look_alikes.size() == 1 && chosen.size() == 1;
+    // A set is listed once, in whatever order its effects came: a
+    // look-alike put in its effect's place reorders a pair the search
+    // among every pair had listed already (a press's preload and
+    // progressive spring cracked in the first cycle, development seed
+    // 9079, ODE: three sets listed as four).
+    auto list_once = [&](const std::vector<EffectKind>& set) {
+      auto same = [&](const std::vector<EffectKind>& a) { return same_set(a, set); };
+      if (std::none_of(d.ambiguous.begin(), d.ambiguous.end(), same)) d.ambiguous.push_back(set);
+    };
     for (LookAlike& l : d.look_alikes) {
       std::vector<EffectKind> set = chosen;
       std::replace(set.begin(), set.end(), l.chosen, l.alike);
@@ -593,13 +602,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       d.steps.push_back("  " + look_alike_text(l, both_too));
       if (!standing.alone && !both_too) continue;
       if (d.ambiguous.empty()) d.ambiguous.push_back(chosen);
-      if (standing.alone && std::find(d.ambiguous.begin(), d.ambiguous.end(), set) == d.ambiguous.end()) {
-        d.ambiguous.push_back(set);
-      }
+      if (standing.alone) list_once(set);
       if (both_too) {
         std::vector<EffectKind> with = chosen;
         with.push_back(l.alike);
-        d.ambiguous.push_back(with);
+        list_once(with);
       }
       ambiguous = true;
     }

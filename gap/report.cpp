@@ -133,7 +133,16 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     }
     out += "\n";
   }
+  // The named set heads the sets that fit alike; the others are as good
+  // as it. An inertia the turns named joins every set, and is last.
+  std::vector<EffectKind> named;
+  for (const EffectFit& e : d.effects) named.push_back(e.kind);
+  if (d.turns.adopted && !named.empty()) named.pop_back();
+  std::sort(named.begin(), named.end());
   for (const auto& set : d.ambiguous) {
+    std::vector<EffectKind> sorted = set;
+    std::sort(sorted.begin(), sorted.end());
+    if (sorted == named) continue;
     std::string s;
     for (EffectKind k : set) s += (s.empty() ? "" : " + ") + std::string(manifest_of(k).name);
     if (d.turns.adopted) s += " (and the turns' arm_inertia)";
