@@ -148,9 +148,17 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     if (d.turns.adopted) s += " (and the turns' arm_inertia)";
     out += "  as good: " + s + "\n";
   }
+  // "Nor from both" where the named set with the look-alike beside it is
+  // listed: a listed set that holds the two in place of another effect
+  // (a weight for a progressive spring, beside the preload it looks like)
+  // says nothing of the two at once.
   for (const LookAlike& l : d.look_alikes) {
-    const bool both = std::any_of(d.ambiguous.begin(), d.ambiguous.end(), [&](const std::vector<EffectKind>& set) {
-      return std::count(set.begin(), set.end(), l.chosen) > 0 && std::count(set.begin(), set.end(), l.alike) > 0;
+    std::vector<EffectKind> with = named;
+    with.push_back(l.alike);
+    std::sort(with.begin(), with.end());
+    const bool both = std::any_of(d.ambiguous.begin(), d.ambiguous.end(), [&](std::vector<EffectKind> set) {
+      std::sort(set.begin(), set.end());
+      return set == with;
     });
     out += "  " + look_alike_text(l, both) + "\n";
   }

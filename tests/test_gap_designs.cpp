@@ -277,6 +277,7 @@ TEST(GapDesigns, AWeightAPreloadCouldMatchOnlyByPullingTheToolShutIsNoPreload) {
   ASSERT_NE(at, std::string::npos) << report_text(d);
   EXPECT_NEAR(std::stod(why.substr(at + 32)), 1.5 - 0.1 * std::cos(18 * kDeg) / 0.010, 0.3) << report_text(d);
   EXPECT_THAT(report_text(d), ::testing::HasSubstr("outside its physical range")) << report_text(d);
+  EXPECT_THAT(report_text(d), ::testing::HasSubstr("gravity from spring_preload, nor from both")) << report_text(d);
   EXPECT_THAT(report_json(d), ::testing::HasSubstr("\"out_of_range\":\"spring_preload would need force -"));
 }
 
