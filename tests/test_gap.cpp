@@ -1236,6 +1236,7 @@ TEST(Gap, ASetALookAlikeMakesAgainIsListedOnce) {
   const std::string text = report_text(d);
   EXPECT_THAT(text, testing::Not(testing::HasSubstr("as good: spring_preload + progressive_spring"))) << text;
   EXPECT_THAT(text, testing::HasSubstr("cannot tell spring_preload from gravity (cosine")) << text;
+  EXPECT_THAT(text, testing::HasSubstr("over 4 folds of 4 blocks of 1 trace (fitted samples")) << text;
 }
 
 TEST(Gap, AProgressiveSpringReadByALateSensorIsFoundWithTheDelayFittedBesideADamping) {
