@@ -80,8 +80,9 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
     std::snprintf(line, sizeof line, "not cross-validated: one block of %zu trace%s (fitted samples:", d.traces,
                   d.traces == 1 ? "" : "s");
   } else {
-    std::snprintf(line, sizeof line, "judged by cross-validation over %zu folds of %zu blocks of %zu trace%s (fitted samples:",
-                  d.folds, d.judged_on.size(), d.traces, d.traces == 1 ? "" : "s");
+    std::snprintf(line, sizeof line,
+                  "judged by cross-validation over %zu folds of %zu blocks of %zu trace%s (fitted samples:", d.folds,
+                  d.judged_on.size(), d.traces, d.traces == 1 ? "" : "s");
   }
   out += line;
   for (const FoldSize& f : d.fold_sizes) out += " " + std::to_string(f.fitted);
