@@ -105,6 +105,12 @@ const char* verdict_name(Verdict v) {
   return kNames[static_cast<int>(v)];
 }
 
+bool same_effects(std::vector<EffectKind> a, std::vector<EffectKind> b) {
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  return a == b;
+}
+
 Measurement with_effects(const Measurement& m, const std::vector<EffectFit>& effects) {
   Measurement with = m;
   for (const EffectFit& e : effects) {
@@ -326,11 +332,6 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
   // (friction or damping alone, then only friction with a progressive
   // spring), so each is carried on and extended.
   std::vector<std::vector<EffectKind>> branches = {{}};
-  auto same_set = [](std::vector<EffectKind> a, std::vector<EffectKind> b) {
-    std::sort(a.begin(), a.end());
-    std::sort(b.begin(), b.end());
-    return a == b;
-  };
   if (!nominal_matched) {
     for (int step = 0; step < kMaxEffects; ++step) {
       struct Tried {
@@ -343,7 +344,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
           if (std::find(branch.begin(), branch.end(), k) != branch.end()) continue;
           std::vector<EffectKind> set = branch;
           set.push_back(k);
-          if (std::any_of(tried.begin(), tried.end(), [&](const Tried& t) { return same_set(t.set, set); })) continue;
+          auto tried_before = [&](const Tried& t) { return same_effects(t.set, set); };
+          if (std::any_of(tried.begin(), tried.end(), tried_before)) continue;
           Scored f = judge.score(set);
           if (f.fit.valid) tried.push_back({std::move(f), set});
         }
@@ -554,7 +556,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // seed 6560, ODE). Every pair that explains as well is as good.
     std::vector<std::vector<EffectKind>> more;
     for (const std::vector<EffectKind>* set : explaining_sets(2, nullptr, false)) {
-      const bool listed = std::any_of(branches.begin(), branches.end(), [&](const auto& b) { return same_set(b, *set); });
+      auto same = [&](const std::vector<EffectKind>& b) { return same_effects(b, *set); };
+      const bool listed = std::any_of(branches.begin(), branches.end(), same);
       if (!listed && as_good_as(current_scored, judge.score(*set))) more.push_back(*set);
     }
     if (!more.empty()) d.steps.push_back("  as good, among every pair that explains: " + sets_text(more));
@@ -591,7 +594,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // progressive spring cracked in the first cycle, development seed
     // 9079, ODE: three sets listed as four).
     auto list_once = [&](const std::vector<EffectKind>& set) {
-      auto same = [&](const std::vector<EffectKind>& a) { return same_set(a, set); };
+      auto same = [&](const std::vector<EffectKind>& a) { return same_effects(a, set); };
       if (std::none_of(d.ambiguous.begin(), d.ambiguous.end(), same)) d.ambiguous.push_back(set);
     };
     for (LookAlike& l : d.look_alikes) {

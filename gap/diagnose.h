@@ -24,6 +24,9 @@ namespace afford {
 enum class Verdict { none, explained, ambiguous, unexplained };
 const char* verdict_name(Verdict v);
 
+// Whether two sets hold the same effects, whatever their order.
+bool same_effects(std::vector<EffectKind> a, std::vector<EffectKind> b);
+
 // One judged trace as the plots draw it: the main signal measured, as the
 // nominal model predicts it, and as the effects fitted on the other traces
 // predict it (held out), in N at the effort (lever) or between the plates;

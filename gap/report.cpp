@@ -139,11 +139,8 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
   std::vector<EffectKind> named;
   for (const EffectFit& e : d.effects) named.push_back(e.kind);
   if (d.turns.adopted && !named.empty()) named.pop_back();
-  std::sort(named.begin(), named.end());
   for (const auto& set : d.ambiguous) {
-    std::vector<EffectKind> sorted = set;
-    std::sort(sorted.begin(), sorted.end());
-    if (sorted == named) continue;
+    if (same_effects(set, named)) continue;
     std::string s;
     for (EffectKind k : set) s += (s.empty() ? "" : " + ") + std::string(manifest_of(k).name);
     if (d.turns.adopted) s += " (and the turns' arm_inertia)";
@@ -156,11 +153,8 @@ std::string report_text(const Diagnosis& d, const Model* nominal) {
   for (const LookAlike& l : d.look_alikes) {
     std::vector<EffectKind> with = named;
     with.push_back(l.alike);
-    std::sort(with.begin(), with.end());
-    const bool both = std::any_of(d.ambiguous.begin(), d.ambiguous.end(), [&](std::vector<EffectKind> set) {
-      std::sort(set.begin(), set.end());
-      return set == with;
-    });
+    const bool both = std::any_of(d.ambiguous.begin(), d.ambiguous.end(),
+                                  [&](const std::vector<EffectKind>& set) { return same_effects(set, with); });
     out += "  " + look_alike_text(l, both) + "\n";
   }
   std::snprintf(line, sizeof line,
