@@ -78,7 +78,7 @@ std::vector<LookAlike> look_alikes(const Fitter& fitter, const std::vector<Effec
       const Eigen::VectorXd b = without(c, others);
       const double norms = a.norm() * b.norm();
       const double cosine = norms > 0 ? std::abs(a.dot(b)) / norms : 0.0;
-      if (cosine >= kLookAlike) out.push_back({k, j, cosine, separating(k, j), ""});
+      if (cosine >= kLookAlike) out.push_back({k, j, cosine, separating(k, j), "", ""});
     }
   }
   return out;
@@ -134,6 +134,12 @@ Standing standing_in(LookAlike& l, const SetFit& swapped, const Model& nominal, 
 
 std::string look_alike_text(const LookAlike& l, bool both) {
   char head[160];
+  if (!l.told_apart.empty()) {
+    std::snprintf(head, sizeof head, "the held-out samples tell %s from %s (cosine %.4f; ", manifest_of(l.chosen).name,
+                  manifest_of(l.alike).name, l.cosine);
+    return head + l.told_apart + ")" +
+           (both ? std::string(", not from both; to tell them apart: ") + l.separate : std::string());
+  }
   std::snprintf(head, sizeof head, "the data cannot tell %s from %s%s (cosine %.4f)", manifest_of(l.chosen).name,
                 manifest_of(l.alike).name, both ? ", nor from both" : "", l.cosine);
   if (l.out_of_range.empty()) return head + std::string("; to tell them apart: ") + l.separate;

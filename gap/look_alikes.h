@@ -19,6 +19,10 @@ struct LookAlike {
   double cosine = 0;                               // of their columns, 0..1
   std::string separate;                            // the measurement that would tell them apart
   std::string out_of_range;  // where physics tells them apart: the value the look-alike would need ("" if none)
+  // Where the held-out samples tell them apart, though their columns are
+  // all but parallel: how the look-alike in the chosen effect's place
+  // predicts them ("" where they do not).
+  std::string told_apart;
 };
 
 // Every candidate of `library` outside `chosen` whose column, and the
@@ -50,7 +54,9 @@ Standing standing_in(LookAlike& l, const SetFit& swapped, const Model& nominal, 
 // "the data cannot tell gravity from spring_preload[, nor from both]
 // (cosine 0.9997); to tell them apart: turn the tool ...", or where
 // physics rules the look-alike out, ", but spring_preload would need
-// ...": one line of the report and of the selection's steps.
+// ...", or where the held-out samples tell them apart, "the held-out
+// samples tell gravity from spring_preload (cosine 0.9993; ...)[, not
+// from both; ...]": one line of the report and of the selection's steps.
 std::string look_alike_text(const LookAlike& l, bool both);
 
 }  // namespace afford

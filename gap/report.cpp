@@ -311,7 +311,8 @@ std::string report_json(const Diagnosis& d, const Model* nominal) {
                            {"alike", manifest_of(l.alike).name},
                            {"cosine", num(l.cosine)},
                            {"separate", l.separate},
-                           {"out_of_range", l.out_of_range}});
+                           {"out_of_range", l.out_of_range},
+                           {"told_apart", l.told_apart}});
   }
   Json phases = Json::array();
   for (const auto& p : d.phases) {
