@@ -610,9 +610,9 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // an effect must cut to earn its place. A tongs' friction and
       // progressive spring in a light squeeze had been given four sets, a
       // preload and a weight in the spring's place leaving 0.113 and 0.117
-      // N held out against its 0.106 N, t 5.0 and 5.4 (development seed
-      // 7391, MuJoCo). Not by the paired test alone: over 20,000 samples
-      // it finds a 0.6 % difference.
+      // N held out against the pair's 0.106 N, t 5.0 and 5.4 (development
+      // seed 7391, MuJoCo). Not by the paired test alone: over 20,000
+      // samples it finds a 0.6 % difference.
       if (standing.alone) {
         const Scored& swapped = judge.score(set);
         const double t = paired_t(current_scored.sq, swapped.sq);
