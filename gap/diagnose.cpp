@@ -507,7 +507,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       // misses it held out: only those that may explain are scored on
       // the folds (a sixth of the fits for the others).
       if (!judge.scored(set)) {
-        const SetFit in_sample = fitter.fit(set);
+        const SetFit& in_sample = judge.fitted(set);
         if (!in_sample.valid || in_sample.rmse_train > kMatched * judge.floor_of(in_sample)) continue;
       }
       const Scored& f = judge.score(set);
@@ -600,7 +600,7 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     for (LookAlike& l : d.look_alikes) {
       std::vector<EffectKind> set = chosen;
       std::replace(set.begin(), set.end(), l.chosen, l.alike);
-      Standing standing = standing_in(l, fitter.fit(set), model, kSeparated);
+      Standing standing = standing_in(l, judge.fitted(set), model, kSeparated);
       // Parallel columns say the two fit alike only up to a share of the
       // effect's own part (a hundredth at the cosine's bound): an effect
       // many times the noise over thousands of samples can leave that

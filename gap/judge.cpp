@@ -84,12 +84,18 @@ std::vector<double> Judge::in_contact_only(const std::vector<double>& sq) const 
 
 const Scored& Judge::score(const std::vector<EffectKind>& set) {
   auto found = sets_.find(set);
-  if (found == sets_.end()) found = sets_.emplace(set, score_anew(set)).first;
+  if (found == sets_.end()) found = sets_.emplace(set, score_anew(set, fitted(set))).first;
   return found->second;
 }
 
-Scored Judge::score_anew(const std::vector<EffectKind>& set) const {
-  Scored out{data_.every.fit(set), {}, 0.0, std::nullopt};
+const SetFit& Judge::fitted(const std::vector<EffectKind>& set) {
+  auto found = fits_.find(set);
+  if (found == fits_.end()) found = fits_.emplace(set, data_.every.fit(set)).first;
+  return found->second;
+}
+
+Scored Judge::score_anew(const std::vector<EffectKind>& set, const SetFit& whole) const {
+  Scored out{whole, {}, 0.0, std::nullopt};
   SetFit& f = out.fit;
   double sq = 0, weights = 0;
   size_t n = 0;

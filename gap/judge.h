@@ -60,6 +60,9 @@ class Judge {
 
   const Scored& score(const std::vector<EffectKind>& set);
   bool scored(const std::vector<EffectKind>& set) const { return sets_.contains(set); }
+  // The set's parameters on every block, fitted once: the search fits a
+  // set there before it asks for its score, the look-alikes after.
+  const SetFit& fitted(const std::vector<EffectKind>& set);
 
   // What the model cannot match better than (N): the effort's noise and
   // the motion's, passed through the set's prediction.
@@ -85,9 +88,10 @@ class Judge {
   const JudgedData& data() const { return data_; }
 
  private:
-  Scored score_anew(const std::vector<EffectKind>& set) const;
+  Scored score_anew(const std::vector<EffectKind>& set, const SetFit& whole) const;
 
   const JudgedData data_;
+  std::map<std::vector<EffectKind>, SetFit> fits_;
   std::map<std::vector<EffectKind>, Scored> sets_;
 };
 
