@@ -74,6 +74,20 @@ const ResidualTest& Judge::whiteness_of(const Scored& f) const {
   return *f.residual_test;
 }
 
+std::vector<double> Judge::beyond_own_noise(const Scored& f) const {
+  const std::vector<std::vector<double>> noise = noise_through(f.fit);
+  std::vector<double> out = f.sq;
+  size_t j = 0;
+  for (size_t k = 0; k < data_.folds.size(); ++k) {
+    for (size_t i : data_.judged[k]) {
+      for (size_t s = 0; s < data_.replays[i].t.size(); ++s) {
+        if (data_.replays[i].fitted[s]) out[j++] -= noise[i][s] * noise[i][s];
+      }
+    }
+  }
+  return out;
+}
+
 std::vector<double> Judge::in_contact_only(const std::vector<double>& sq) const {
   std::vector<double> out;
   for (size_t j = 0; j < sq.size(); ++j) {

@@ -82,6 +82,10 @@ class Judge {
   // The residual tested for whiteness, the noise its prediction carries
   // by itself taken off (once a set: kept with its score).
   const ResidualTest& whiteness_of(const Scored& f) const;
+  // The held-out squared errors of a scored set (as Scored::sq lists
+  // them) less the motion's noise its own prediction carries at each
+  // (N^2, weighed): what is left of the misfit beyond that noise.
+  std::vector<double> beyond_own_noise(const Scored& f) const;
   // Of the held-out squared errors `sq` (as Scored::sq lists them), those
   // in the actee's contact.
   std::vector<double> in_contact_only(const std::vector<double>& sq) const;
