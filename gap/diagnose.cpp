@@ -536,8 +536,8 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     return was - other.fit.rmse_test * other.fit.rmse_test >= kNearlyAsFar * cut && paired_t(best.sq, other.sq) < kSeparated;
   };
   if (!nominal_matched && (!effects_match(current_scored) || chosen.size() > 2)) {
-    const std::vector<double> forward_sq = judge.beyond_own_noise(current_scored);
     const bool forward_short = !effects_match(current_scored);
+    const std::vector<double> forward_sq = forward_short ? judge.beyond_own_noise(current_scored) : std::vector<double>{};
     for (size_t size = 1; size <= 2; ++size) {
       const std::vector<const std::vector<EffectKind>*> explaining =
           explaining_sets(size, forward_short ? &forward_sq : nullptr, true);
