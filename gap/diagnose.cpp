@@ -593,7 +593,13 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // weight from a preload one way up, nor from both. Listed only where
     // the two make a pair: beside a second chosen effect they would make
     // three, and where a pair explains the data do not ask for a third
-    // (the smallest set that explains, above).
+    // (the smallest set that explains, above). Where it has several, each
+    // pair is listed only where none of them takes its part alone: then
+    // the pairs are all the data cannot tell from it (a snips' weight and
+    // lower preload on closing-only strokes one way up, read as a weight
+    // with a friction and a preload each outside its range alone, named
+    // the weight alone: development seed 9374, ODE); where some do, the
+    // singles already say the data cannot tell them apart.
     // Physics tells what the data cannot: in the chosen effect's place the
     // look-alike must take its part within its physical range (one way up
     // a weight reads as a preload only where the spring that pushes the
@@ -601,7 +607,6 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
     // ODE). Where its search stops at the range's edge (a delay at 0 s),
     // it takes none. Where it alone leaves its range, both at once still
     // split the part they share if its file value has room to move its way.
-    const bool one_and_one = d.look_alikes.size() == 1 && chosen.size() == 1;
     // A set is listed once, in whatever order its effects came: a
     // look-alike put in its effect's place reorders a pair the search
     // among every pair had listed already (a press's preload and
@@ -611,10 +616,11 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
       auto same = [&](const std::vector<EffectKind>& a) { return same_effects(a, set); };
       if (std::none_of(d.ambiguous.begin(), d.ambiguous.end(), same)) d.ambiguous.push_back(set);
     };
+    std::vector<Standing> standings;
     for (LookAlike& l : d.look_alikes) {
       std::vector<EffectKind> set = chosen;
       std::replace(set.begin(), set.end(), l.chosen, l.alike);
-      Standing standing = standing_in(l, judge.fitted(set), model, kSeparated);
+      Standing& standing = standings.emplace_back(standing_in(l, judge.fitted(set), model, kSeparated));
       // Parallel columns say the two fit alike only up to a share of the
       // effect's own part (a hundredth at the cosine's bound): an effect
       // many times the noise over thousands of samples can leave that
@@ -638,7 +644,14 @@ Diagnosis diagnose(const Measurement& m, const DiagnoseOptions& options) {
           l.told_apart = line;
         }
       }
-      const bool both_too = one_and_one && standing.beside;
+    }
+    const bool none_alone = std::none_of(standings.begin(), standings.end(), [](const Standing& s) { return s.alone; });
+    for (size_t j = 0; j < d.look_alikes.size(); ++j) {
+      const LookAlike& l = d.look_alikes[j];
+      const Standing& standing = standings[j];
+      std::vector<EffectKind> set = chosen;
+      std::replace(set.begin(), set.end(), l.chosen, l.alike);
+      const bool both_too = chosen.size() == 1 && (d.look_alikes.size() == 1 || none_alone) && standing.beside;
       d.steps.push_back("  " + look_alike_text(l, both_too));
       if (!standing.alone && !both_too) continue;
       if (d.ambiguous.empty()) d.ambiguous.push_back(chosen);

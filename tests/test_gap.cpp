@@ -1324,6 +1324,28 @@ TEST(Gap, ADampingIsNotJudgedWorseAtAStepForTheNoiseItsOwnPredictionCarries) {
   EXPECT_LE(d.ambiguous.size(), 3u) << report_text(d);
 }
 
+TEST(Gap, AnEffectWhoseLookAlikesCannotTakeItsPartAloneIsListedWithEachBesideIt) {
+  // The snips on closing-only strokes one way up (development seed 9374,
+  // ODE), with a weight and a weaker preload their file lacks: a weight
+  // of 0.146 N*m takes both. Friction and a preload each look like it,
+  // but alone would need a negative friction or a preload that pulls the
+  // snips shut, outside their ranges; a share of either beside the weight
+  // fits as well. Where the weight had one look-alike that pair was
+  // listed; with two, the weight was named alone, a confident half.
+  const Diagnosis d =
+      diagnose(load_measurement(kSource + "/tests/data/gap/snips-weight-weaker-preload-closing/measurement.yaml"));
+  EXPECT_EQ(d.verdict, Verdict::ambiguous) << report_text(d);
+  const std::vector<std::vector<EffectKind>> sets = {
+      {EffectKind::gravity},
+      {EffectKind::gravity, EffectKind::pivot_friction},
+      {EffectKind::gravity, EffectKind::spring_preload},
+  };
+  ASSERT_EQ(d.ambiguous.size(), sets.size()) << report_text(d);
+  for (const std::vector<EffectKind>& set : sets) {
+    EXPECT_THAT(d.ambiguous, testing::Contains(testing::UnorderedElementsAreArray(set))) << report_text(d);
+  }
+}
+
 TEST(Gap, AThirdEffectThatLeavesTheHeldOutSamplesOverTheNoiseHasNotExplainedTheGap) {
   // The same snips with the damping withheld from the library: the delay
   // that leaves readings out stays at 0 (no damping to fit it again
